@@ -1,0 +1,54 @@
+/* weld.h - position welding and triangle adjacency (meshoptimizer-style).
+ *
+ * The PVS finds silhouette edges by comparing the facing of the two triangles
+ * on each edge. Scenes arrive as polygon soups (every primitive has its own
+ * vertices, OpenArena has T-junctions and fins), so edges are matched on
+ * welded positions, never on raw vertex ids. Output buffers are caller-owned.
+ */
+#ifndef TRIMVR_SCENE_WELD_H
+#define TRIMVR_SCENE_WELD_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* adjacency[] value for an edge only one triangle uses (or a degenerate edge
+ * whose two ends weld together). */
+#define SCN_EDGE_BORDER 0xFFFFFFFFu
+/* adjacency[] value for an edge shared by three or more triangles. */
+#define SCN_EDGE_NONMANIFOLD 0xFFFFFFFEu
+
+/* Exact welding: remap[v] = the smallest vertex id whose position is bitwise
+ * equal to v's (after folding -0.0 into +0.0, so a mirrored coordinate still
+ * welds). No epsilon: two positions that differ in one ulp are distinct, as
+ * they are for the rasteriser. `remap` holds vertex_count entries;
+ * `positions` holds 3 floats per vertex. Returns the number of unique
+ * positions. Expected O(n) (one hash table of ~2n slots, allocated inside;
+ * returns 0 and leaves remap[v] = v if that allocation fails). */
+size_t scn_weld_positions(uint32_t* remap, const float* positions, size_t vertex_count);
+
+/* For triangle t and edge e (corner e -> corner (e+1)%3), writes into
+ * adjacency[3t+e]:
+ *   - the other triangle's id when exactly two triangles share the welded
+ *     edge, whatever their winding. With inconsistent winding (the neighbour
+ *     walks the edge in the same direction) the pair is still reported: a
+ *     consumer that classifies facing per triangle then sees the edge as a
+ *     silhouette wherever the two disagree, which is conservative;
+ *   - SCN_EDGE_BORDER when no other triangle has the edge, or when both ends
+ *     of the edge weld to one position (degenerate edge);
+ *   - SCN_EDGE_NONMANIFOLD when three or more triangles share it.
+ * `adjacency` and `indices` hold 3*triangle_count entries; `remap` comes from
+ * scn_weld_positions over the same vertex array. Expected O(n); on allocation
+ * failure every edge is written as SCN_EDGE_BORDER (always-silhouette, so the
+ * consumer stays conservative) and an error is logged. */
+void scn_build_adjacency(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                         const uint32_t* remap);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
