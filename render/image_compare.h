@@ -1,0 +1,35 @@
+/* image_compare.h - pure C image metrics (no Vulkan): PSNR, differing
+ * pixels, false-negative pixels from id buffers. Library tv_imgcmp, usable
+ * in the headless sanitizer build. */
+#ifndef TRIMVR_IMAGE_COMPARE_H
+#define TRIMVR_IMAGE_COMPARE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* PSNR in dB over the R, G and B channels of two 8-bit images of
+ * pixel_count pixels, each pixel stride bytes apart (3 for RGB, 4 for RGBA;
+ * alpha is ignored): 10 log10(255^2 / MSE). Identical images return
+ * INFINITY (callers print it as "inf"). pixel_count > 0. */
+double rnd_psnr_rgb8(const uint8_t* a, const uint8_t* b, size_t pixel_count, size_t stride);
+
+/* Pixels whose R, G or B differ by more than tolerance (0: any difference). */
+size_t rnd_count_diff_pixels(const uint8_t* a, const uint8_t* b, size_t pixel_count, size_t stride,
+                             uint8_t tolerance);
+
+/* False-negative pixels: pixels of a full render whose triangle id is not in
+ * the set. tri_in_set is a byte mask of triangle_count entries (non-zero =
+ * in the set); pixels holding TV_NO_TRIANGLE (0xFFFFFFFF) are never false
+ * negatives. Every other id must be < triangle_count. */
+size_t rnd_count_fn_pixels(const uint32_t* full_ids, size_t pixel_count, const uint8_t* tri_in_set,
+                           size_t triangle_count);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,79 @@
+/* trimvr shared configuration: included by C and by GLSL.
+ * Only #define lines and comments: GLSL's preprocessor must accept every line,
+ * so sizes and limits cannot drift between the host and the shaders. */
+#ifndef TRIMVR_SHADER_CONFIG_H
+#define TRIMVR_SHADER_CONFIG_H
+
+/* Descriptor sets of the mesh pipeline (render/): the scene's buffers and
+ * textures (shared, read-only), and the per-target subset id list. */
+#define TV_SET_SCENE 0
+#define TV_SET_DRAW  1
+
+/* Bindings of set TV_SET_SCENE, except TV_BIND_DRAW_IDS (set TV_SET_DRAW). */
+#define TV_BIND_POSITIONS 0   /* float[3] per welded vertex           */
+#define TV_BIND_ATTRIBS   1   /* normal.xyz, uv.xy per vertex          */
+#define TV_BIND_INDICES   2   /* uint[3] per triangle                  */
+#define TV_BIND_TRI_MAT   3   /* material index per triangle           */
+#define TV_BIND_MATERIALS 4   /* tv_material_gpu per material          */
+#define TV_BIND_DRAW_IDS  5   /* triangle ids drawn (subset renders)   */
+#define TV_BIND_TEXTURES  6   /* one sampler2DArray, a layer per texture */
+
+/* Lighting of the mesh pass, linear RGB: one directional light (unit vector
+ * towards the light) plus a hemispheric ambient blended by normal.y. */
+#define TV_SUN_DIR     0.30151134, 0.90453403, 0.30151134
+#define TV_SUN_COLOR   0.75, 0.75, 0.75
+#define TV_SKY_COLOR   0.30, 0.32, 0.35
+#define TV_GROUND_COLOR 0.12, 0.11, 0.10
+
+/* Textures are layers of one sRGB 2D array image (lavapipe has no dynamic
+ * indexing of sampler arrays and only 32 samplers per stage): at most
+ * TV_MAX_TEXTURES layers, every layer resampled to the largest texture's
+ * size capped at TV_MAX_TEXTURE_SIZE. */
+#define TV_MAX_TEXTURES 256
+#define TV_MAX_TEXTURE_SIZE 1024
+
+/* Triangle id written where no triangle covers the pixel. */
+#define TV_NO_TRIANGLE 0xFFFFFFFFu
+
+/* Workgroup size of 1D compute passes. */
+#define TV_WG_SIZE 64
+
+/* Material flags (tv_material_gpu.flags). */
+#define TV_MAT_TEXTURED   1u
+#define TV_MAT_ALPHA_MASK 2u
+#define TV_MAT_DOUBLE_SIDED 4u
+
+/* Trim-region PVS, per-pixel k-buffers of P2 and the trim-sequence resolve of
+ * P3 (pvs/resolve.h is the C reference the shaders mirror). Capacity per
+ * pixel and kind; a counter above its K marks the pixel overflowed. */
+#define TV_K_FRONT 32
+#define TV_K_BACK  32
+#define TV_K_TRIM  32
+#define TV_K_UMBRA 32
+#define TV_K_CARRY 16 /* entries one pixel carries from a layer to the next */
+
+/* Trim-region stencil values (one per pixel, initialised UNTRIMMED). */
+#define TV_STENCIL_UNTRIMMED 0u
+#define TV_STENCIL_TRIMMED   1u
+#define TV_STENCIL_SEALED    2u
+#define TV_STENCIL_OVERFLOW  3u /* lost entries: every later front is output, never sealed */
+
+/* Trim-sequence entry kinds. The value is also the tie-break rank when two
+ * entries have equal depth: an umbra end sorts first (what lies exactly on
+ * it is not hidden) and a range begin last (what lies exactly on it is not
+ * hidden either); fronts before trims before backs, so a trim at the depth
+ * of either face lies inside the interval. */
+#define TV_ENTRY_END   0u /* end of a hidden range: umbra of a validated interval */
+#define TV_ENTRY_FRONT 1u
+#define TV_ENTRY_TRIM  2u
+#define TV_ENTRY_BACK  3u
+#define TV_ENTRY_BEGIN 4u /* start of a hidden range carried from an earlier layer */
+#define TV_ENTRY_UMBRA 5u /* an umbra fragment as rasterised (looked up by region) */
+
+/* Flag on a front's triangle id: a candidate front, i.e. a triangle that
+ * touches the pixel without covering its centre (P2's dilated pass). It is
+ * output when not hidden but never occludes: it neither starts an interval
+ * nor terminates the pixel. Triangle ids stay below it. */
+#define TV_ID_CANDIDATE 0x80000000u
+
+#endif

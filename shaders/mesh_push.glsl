@@ -1,0 +1,6 @@
+// mesh_push.glsl - push constants of the mesh pass (rnd_mesh_push in
+// render/vk_internal.h mirrors this layout).
+layout(push_constant) uniform tv_mesh_push {
+    mat4 view_proj;
+    uint use_draw_ids;
+} pc;

@@ -1,0 +1,85 @@
+#version 460
+// P1: one invocation per triangle of the layer. Classifies the triangle as
+// front- or back-facing from v* (plane test, as pvs/silhouette.c), appends
+// it to the FF or BF draw list unless its clip-space outcodes put it outside
+// one frustum plane, and emits a silhouette record (trim quad + umbra quad,
+// one trim-region id) for every silhouette edge it owns: border and
+// non-manifold edges always, an edge to an opposite-facing neighbour when
+// this triangle is the front-facing one. Counts go straight into the
+// indirect draw commands, so nothing returns to the CPU between phases.
+#extension GL_GOOGLE_include_directive : require
+#include "mesh_common.glsl"
+#include "pvs_common.glsl"
+#include "pvs_trim.glsl"
+
+layout(local_size_x = TV_WG_SIZE) in;
+
+vec3 corner_position(uint tri, uint c) { return tv_vertex_position(tv_vertex_index(tri, c)); }
+
+bool front_facing(uint tri)
+{
+    vec3 a = corner_position(tri, 0u), b = corner_position(tri, 1u), c = corner_position(tri, 2u);
+    return dot(cross(b - a, c - a), view.apex.xyz - a) > 0.0;
+}
+
+uint outcode(vec4 clip)
+{
+    uint code = 0u;
+    code |= clip.x < -clip.w ? 1u : 0u;
+    code |= clip.x > clip.w ? 2u : 0u;
+    code |= clip.y < -clip.w ? 4u : 0u;
+    code |= clip.y > clip.w ? 8u : 0u;
+    code |= clip.z < 0.0 ? 16u : 0u;
+    code |= clip.z > clip.w ? 32u : 0u;
+    return code;
+}
+
+// other: the triangle across the edge, or >= SCN_EDGE_NONMANIFOLD.
+void emit_silhouette(vec3 e0, vec3 e1, vec3 inside, uint other)
+{
+    bool has_back = other < 0xFFFFFFFEu;
+    vec3 nb = vec3(0.0), pb = vec3(0.0);
+    if (has_back) {
+        pb = corner_position(other, 0u);
+        nb = cross(corner_position(other, 1u) - pb, corner_position(other, 2u) - pb);
+    }
+    vec3 c[6];
+    if (!pvs_trim_quad(e0, e1, inside, has_back, nb, pb, c))
+        return;
+    uint slot = atomicAdd(counters[TV_PVS_C_DRAW_TRIM], 6u) / 6u;
+    atomicAdd(counters[TV_PVS_C_DRAW_UMBRA], 6u);
+    uint region = atomicAdd(counters[TV_PVS_C_REGIONS], 1u);
+    uint base = slot * TV_PVS_SIL_VEC4;
+    sil[base] = vec4(c[0], uintBitsToFloat(region));
+    for (uint i = 1u; i < TV_PVS_SIL_VEC4; i++)
+        sil[base + i] = vec4(c[i], 0.0);
+}
+
+void main()
+{
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= pc.layer_count)
+        return;
+    uint tri = layer_tris[pc.layer_offset + i];
+    vec3 p[3] = vec3[3](corner_position(tri, 0u), corner_position(tri, 1u), corner_position(tri, 2u));
+    bool front = front_facing(tri);
+    uint codes = outcode(view.view_proj * vec4(p[0], 1.0)) & outcode(view.view_proj * vec4(p[1], 1.0)) &
+                 outcode(view.view_proj * vec4(p[2], 1.0));
+    if (codes == 0u) {
+        if (front)
+            ff_list[atomicAdd(counters[TV_PVS_C_DRAW_FF], 3u) / 3u] = tri;
+        else
+            bf_list[atomicAdd(counters[TV_PVS_C_DRAW_BF], 3u) / 3u] = tri;
+    }
+    // Silhouettes of triangles outside the frustum are still emitted (unless
+    // behind the near or beyond the far plane): their trim quads extend
+    // inwards and may reach into the image.
+    if ((codes & 48u) != 0u)
+        return;
+    for (uint e = 0u; e < 3u; e++) {
+        uint other = adjacency[3u * tri + e];
+        bool silhouette = other >= 0xFFFFFFFEu || (front && !front_facing(other));
+        if (silhouette)
+            emit_silhouette(p[e], p[(e + 1u) % 3u], p[(e + 2u) % 3u], other);
+    }
+}

@@ -1,0 +1,49 @@
+// pvs_common.glsl - the descriptor set, view block and push constants every
+// trim-region PVS pass shares (pvs/gpu_internal.h mirrors the layouts).
+#ifndef TV_PVS_COMMON_GLSL
+#define TV_PVS_COMMON_GLSL
+
+#include "config.h"
+#include "pvs_layout.glsl"
+
+// Vertex shaders define PVS_RW as readonly before including this file: the
+// device enables fragment but not vertex-stage stores.
+#ifndef PVS_RW
+#define PVS_RW
+#endif
+
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs_view_buf {
+    mat4 view_proj;
+    vec4 apex, forward, right, up;
+    float tan_half_x, tan_half_y, tan_alpha, far_dist;
+    float near_dist, delta, focal_px, max_width;
+    uint width, height, k, triangle_count;
+} view;
+
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ADJ) readonly buffer pvs_adj_buf { uint adjacency[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LAYER_TRIS) readonly buffer pvs_layer_buf { uint layer_tris[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_FF) PVS_RW buffer pvs_ff_buf { uint ff_list[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_BF) PVS_RW buffer pvs_bf_buf { uint bf_list[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_SIL) PVS_RW buffer pvs_sil_buf { vec4 sil[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_COUNTERS) PVS_RW coherent buffer pvs_counter_buf { uint counters[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KFRONT) PVS_RW buffer pvs_kfront_buf { uvec2 kfront[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KBACK) PVS_RW buffer pvs_kback_buf { uint kback[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KTRIM) PVS_RW buffer pvs_ktrim_buf { uvec2 ktrim[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KUMBRA) PVS_RW buffer pvs_kumbra_buf { uvec2 kumbra[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_PIXCOUNT) PVS_RW coherent buffer pvs_pixcount_buf { uvec4 pixcount[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_PIXSTATE) PVS_RW buffer pvs_pixstate_buf { uvec4 pixstate[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CARRY) PVS_RW buffer pvs_carry_buf { uvec4 carry_buf[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ACTIVE) PVS_RW coherent buffer pvs_active_buf { uint active_flag[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ACTIVE_LIST) PVS_RW buffer pvs_active_list_buf { uint active_list[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_TRI_FLAGS) PVS_RW buffer pvs_flags_buf { uint tri_flags[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LAYER_STATS) PVS_RW buffer pvs_layer_stats_buf { uvec4 layer_stats[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CENTRE_DEPTH) PVS_RW coherent buffer pvs_centre_buf { uint centre_depth[]; };
+
+layout(push_constant) uniform pvs_push_block {
+    uint layer_offset;
+    uint layer_count;
+    uint layer;
+    uint kind;
+} pc;
+
+#endif

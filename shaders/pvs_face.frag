@@ -1,0 +1,70 @@
+#version 460
+// P2, scene triangles: alpha mask exactly as the mesh pass, then the front
+// or back k-buffer. Both also write the visibility buffer (the pipeline's
+// LESS depth test keeps the nearest id), sealed pixels included, so that P4
+// sees the nearest triangle of every pixel (the renderer culls no faces).
+// The exact pass also keeps the nearest depth of the faces covering each
+// pixel centre (centre_depth). The dilated pass (TV_PVS_KIND_WIDE, see
+// pvs_face.vert) writes the wide visibility buffer and, at pixels whose
+// centre the undilated triangle does not cover: flags the triangle when all
+// of it lies in front of that nearest centre depth (nothing covering the
+// centre hides it, so it is visible from v* through part of the pixel:
+// typically a sub-pixel triangle the raster missed), and inserts a front as
+// a candidate front, which P3 outputs where it is not hidden but never lets
+// occlude.
+#extension GL_GOOGLE_include_directive : require
+#include "mesh_common.glsl"
+#include "pvs_kbuffer.glsl"
+
+layout(location = 0) in vec2 v_uv;
+layout(location = 1) flat in uint v_triangle;
+layout(location = 2) flat in uint v_material;
+layout(location = 3) flat in vec4 v_s01;
+layout(location = 4) flat in vec3 v_s2;
+layout(location = 5) flat in float v_far;
+
+layout(location = 0) out uint o_triangle;
+
+// Strictly inside by 1/64 pixel: a centre on an edge counts as not covered,
+// so a fragment the exact pass's tie rule dropped is a candidate here (a
+// duplicate front is harmless, a lost one is not).
+bool covers_centre()
+{
+    vec2 s[3] = vec2[3](v_s01.xy, v_s01.zw, v_s2.xy);
+    vec2 c = gl_FragCoord.xy;
+    for (uint i = 0u; i < 3u; i++) {
+        vec2 e = s[(i + 1u) % 3u] - s[i], d = c - s[i];
+        if (v_s2.z * (e.x * d.y - e.y * d.x) <= length(e) / 64.0)
+            return false;
+    }
+    return true;
+}
+
+void main()
+{
+    vec4 base = tv_material_color(v_material, v_uv);
+    if (tv_alpha_masked(v_material, base.a))
+        discard;
+    o_triangle = v_triangle;
+    uint p = pvs_pixel();
+    uint kind = pc.kind & ~TV_PVS_KIND_WIDE, id = v_triangle;
+    if (kind == pc.kind) {
+        atomicMin(centre_depth[p], floatBitsToUint(pvs_depth()));
+    } else { // the dilated pass, after the exact one
+        if (v_s2.z == 0.0 || covers_centre())
+            return;
+        // in front of everything covering the centre: visible from v*
+        // through part of the pixel
+        if (v_far < uintBitsToFloat(centre_depth[p]))
+            tri_flags[v_triangle] = 1u;
+        if (kind != TV_PVS_KIND_FRONT)
+            return;
+        id |= TV_ID_CANDIDATE;
+    }
+    if (pvs_sealed(p))
+        return;
+    if (!pvs_push(p, kind, pvs_depth(), id) && kind == TV_PVS_KIND_FRONT) {
+        tri_flags[v_triangle] = 1u; // overflow policy: a front that found no room is output
+        atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);
+    }
+}

@@ -1,0 +1,61 @@
+// pvs_layout.glsl - descriptor bindings and counter slots of the trim-region
+// PVS passes (pvs/gpu_*.c and shaders/pvs_*). Only #define lines: the C side
+// includes this file too, so the two can never disagree.
+#ifndef TV_PVS_LAYOUT_GLSL
+#define TV_PVS_LAYOUT_GLSL
+
+// Set 0 is the scene set (TV_SET_SCENE); the PVS passes bind theirs as set 1.
+#define TV_PVS_SET 1
+
+#define TV_PVS_BIND_VIEW       0  // pvs_view_gpu: matrices and frustum of v*
+#define TV_PVS_BIND_ADJ        1  // uint[3] per triangle: neighbour across each edge
+#define TV_PVS_BIND_LAYER_TRIS 2  // the triangle ids of every layer, back to back
+#define TV_PVS_BIND_FF         3  // P1 -> P2: front-facing triangle ids of the layer
+#define TV_PVS_BIND_BF         4  // P1 -> P2: back-facing triangle ids of the layer
+#define TV_PVS_BIND_SIL        5  // P1 -> P2: TV_PVS_SIL_VEC4 vec4 per silhouette edge
+#define TV_PVS_BIND_COUNTERS   6  // indirect commands and counters (TV_PVS_C_*)
+#define TV_PVS_BIND_KFRONT     7  // k-buffer: uvec2 (depth bits, triangle) per slot
+#define TV_PVS_BIND_KBACK      8  // k-buffer: depth bits per slot
+#define TV_PVS_BIND_KTRIM      9  // k-buffer: uvec2 (depth bits, region) per slot
+#define TV_PVS_BIND_KUMBRA     10 // k-buffer: uvec2 (depth bits, region) per slot
+#define TV_PVS_BIND_PIXCOUNT   11 // uvec4 per pixel: front, back, trim, umbra counters
+#define TV_PVS_BIND_PIXSTATE   12 // uvec4 per pixel: stencil, carry count, hide begin/end bits
+#define TV_PVS_BIND_CARRY      13 // uvec4 (depth bits, kind, id, 0) x TV_K_CARRY per pixel
+#define TV_PVS_BIND_ACTIVE     14 // uint per pixel: active pixel stencil
+#define TV_PVS_BIND_ACTIVE_LIST 15 // pixel indices activated in this layer
+#define TV_PVS_BIND_TRI_FLAGS  16 // uint per triangle: 1 = in the PVS
+#define TV_PVS_BIND_VIS_IDS    17 // r32ui storage image: the visibility buffer's ids
+#define TV_PVS_BIND_LAYER_STATS 18 // uvec4 per layer: entries, active pixels, sequence sum, overflows
+#define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
+#define TV_PVS_BIND_CENTRE_DEPTH 20 // uint per pixel: nearest depth bits of the faces covering its centre
+#define TV_PVS_BINDINGS        21
+
+// vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
+// behind e1, trim corner behind e0, umbra far corner behind e1, behind e0.
+#define TV_PVS_SIL_VEC4 6
+
+// Slots of the counters buffer (uints). Four VkDrawIndirectCommand (FF, BF,
+// trim, umbra; vertexCount is bumped by P1 per primitive), one
+// VkDispatchIndirectCommand for P3, then counters that live for a whole
+// pvs_compute.
+#define TV_PVS_C_DRAW_FF    0
+#define TV_PVS_C_DRAW_BF    4
+#define TV_PVS_C_DRAW_TRIM  8
+#define TV_PVS_C_DRAW_UMBRA 12
+#define TV_PVS_C_DISPATCH   16
+#define TV_PVS_C_ACTIVE     19 // active pixels of the current layer
+#define TV_PVS_C_PER_LAYER  20 // slots [0, 20) are reset before every layer
+#define TV_PVS_C_REGIONS    20 // trim regions numbered so far
+#define TV_PVS_C_OVERFLOW_FRONTS 21
+#define TV_PVS_C_COUNT      24
+
+// Fragment kinds of P2 (push constant `kind`), = TV_ENTRY_* of config.h.
+#define TV_PVS_KIND_FRONT 1u
+#define TV_PVS_KIND_TRIM  2u
+#define TV_PVS_KIND_BACK  3u
+#define TV_PVS_KIND_UMBRA 5u
+// Flag on FRONT/BACK: the dilated pass (wide visibility buffer; fronts that
+// miss the pixel centre become candidate fronts).
+#define TV_PVS_KIND_WIDE 256u
+
+#endif

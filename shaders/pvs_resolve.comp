@@ -1,0 +1,340 @@
+#version 460
+// P3: one invocation per active pixel (the list P2 built). The resolve of
+// paper section 4.3, mirroring pvs_resolve_pixel in pvs/resolve.c function
+// by function (same names, same order, same tie-breaks); the only
+// difference is the runtime capacity view.k in place of the TV_K_* bounds.
+// Output ids set their flag in tri_flags; the pixel's active flag is reset
+// for the next layer (the counters are cleared by a fill before each layer).
+#extension GL_GOOGLE_include_directive : require
+#include "pvs_common.glsl"
+
+layout(local_size_x = TV_WG_SIZE) in;
+
+#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
+#define IV_MAX (TV_K_BACK < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK : TV_K_FRONT + TV_K_CARRY)
+#define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
+
+struct seq_entry {
+    float depth;
+    uint kind;
+    uint id;
+    int interval;
+    int delta;
+};
+
+// The pixel: state, counters, k-buffer base.
+uint P, KB;
+uvec4 cnt;
+uint stencil, carry_count;
+float hide_begin, hide_end;
+seq_entry carry[TV_K_CARRY]; // only depth, kind, id used
+
+seq_entry seq[SEQ_MAX];
+seq_entry seq2[SEQ2_MAX];
+uint iv_count;
+uint iv_first[IV_MAX], iv_back[IV_MAX];
+bool iv_valid[IV_MAX];
+float iv_end[IV_MAX];
+int iv_run;
+uint n_out;
+
+seq_entry make_entry(float depth, uint kind, uint id, int delta) { return seq_entry(depth, kind, id, -1, delta); }
+
+bool entry_less(seq_entry a, seq_entry b)
+{
+    if (a.depth != b.depth)
+        return a.depth < b.depth;
+    if (a.kind != b.kind)
+        return a.kind < b.kind;
+    return a.id < b.id;
+}
+
+void output_id(uint id)
+{
+    tri_flags[id & ~TV_ID_CANDIDATE] = 1u;
+    n_out++;
+}
+
+bool is_candidate(seq_entry e) { return e.kind == TV_ENTRY_FRONT && (e.id & TV_ID_CANDIDATE) != 0u; }
+
+float kdepth(uint bits) { return uintBitsToFloat(bits); }
+
+// The overflow policy: every front this pixel knows of is output and the
+// pixel can no longer be sealed.
+void resolve_overflow()
+{
+    for (uint i = 0u; i < carry_count; i++)
+        if (carry[i].kind == TV_ENTRY_FRONT)
+            output_id(carry[i].id);
+    for (uint i = 0u; i < min(cnt.x, view.k); i++)
+        output_id(kfront[KB + i].y);
+    stencil = TV_STENCIL_OVERFLOW;
+    carry_count = 0u;
+    hide_begin = hide_end = 0.0;
+}
+
+bool umbra_depth(uint region, inout float depth)
+{
+    const float inf = uintBitsToFloat(0x7F800000u);
+    float nearest = inf;
+    for (uint i = 0u; i < min(cnt.w, view.k); i++) {
+        uvec2 u = kumbra[KB + i];
+        if (u.y == region)
+            nearest = min(nearest, kdepth(u.x));
+    }
+    for (uint i = 0u; i < carry_count; i++) {
+        if (carry[i].kind == TV_ENTRY_UMBRA && carry[i].id == region)
+            nearest = min(nearest, carry[i].depth);
+    }
+    if (nearest == inf)
+        return false;
+    depth = nearest;
+    return true;
+}
+
+uint gather()
+{
+    uint n = 0u;
+    for (uint i = 0u; i < carry_count; i++)
+        if (carry[i].kind != TV_ENTRY_UMBRA)
+            seq[n++] = make_entry(carry[i].depth, carry[i].kind, carry[i].id, 0);
+    for (uint i = 0u; i < min(cnt.x, view.k); i++)
+        seq[n++] = make_entry(kdepth(kfront[KB + i].x), TV_ENTRY_FRONT, kfront[KB + i].y, 0);
+    for (uint i = 0u; i < min(cnt.y, view.k); i++)
+        seq[n++] = make_entry(kdepth(kback[KB + i]), TV_ENTRY_BACK, 0u, 0);
+    for (uint i = 0u; i < min(cnt.z, view.k); i++)
+        seq[n++] = make_entry(kdepth(ktrim[KB + i].x), TV_ENTRY_TRIM, ktrim[KB + i].y, 0);
+    for (uint i = 1u; i < n; i++) { // insertion sort
+        seq_entry x = seq[i];
+        uint j = i;
+        while (j > 0u && entry_less(x, seq[j - 1u])) {
+            seq[j] = seq[j - 1u];
+            j--;
+        }
+        seq[j] = x;
+    }
+    return n;
+}
+
+void form_intervals(uint n)
+{
+    iv_count = 0u;
+    iv_run = -1;
+    for (uint i = 0u; i < n; i++) {
+        if (seq[i].kind == TV_ENTRY_FRONT && !is_candidate(seq[i]) && iv_run < 0) {
+            iv_run = int(i);
+        } else if (seq[i].kind == TV_ENTRY_BACK && iv_run >= 0) {
+            uint k = iv_count++;
+            iv_first[k] = uint(iv_run);
+            iv_back[k] = i;
+            for (uint j = uint(iv_run); j <= i; j++)
+                if (seq[j].kind != TV_ENTRY_TRIM)
+                    seq[j].interval = int(k);
+            iv_run = -1;
+        }
+    }
+}
+
+void validate(uint n)
+{
+    for (uint v = 0u; v < iv_count; v++) {
+        float lo = seq[iv_first[v]].depth, hi = seq[iv_back[v]].depth;
+        iv_valid[v] = false;
+        for (uint i = 0u; i < n; i++) {
+            if (seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
+                continue;
+            float u = hi;
+            if (!umbra_depth(seq[i].id, u) || u < hi)
+                u = hi;
+            iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
+            iv_valid[v] = true;
+        }
+    }
+}
+
+uint replace_backs(uint n)
+{
+    uint m = 0u;
+    for (uint i = 0u; i < n; i++) {
+        int v = seq[i].interval;
+        bool valid = v >= 0 && iv_valid[v];
+        if (valid && seq[i].kind == TV_ENTRY_BACK)
+            continue;
+        seq2[m] = seq[i];
+        seq2[m++].delta = valid && iv_first[v] == i ? 1 : 0;
+    }
+    for (uint v = 0u; v < iv_count; v++) {
+        if (iv_valid[v]) {
+            seq2[m] = make_entry(iv_end[v], TV_ENTRY_END, v, -1);
+            seq2[m++].interval = int(v);
+        }
+    }
+    if (hide_begin < hide_end) {
+        seq2[m++] = make_entry(hide_begin, TV_ENTRY_BEGIN, 0u, 1);
+        seq2[m++] = make_entry(hide_end, TV_ENTRY_END, 0xFFFFFFFFu, -1);
+    }
+    for (uint i = 1u; i < m; i++) {
+        seq_entry x = seq2[i];
+        uint j = i;
+        while (j > 0u && entry_less(x, seq2[j - 1u])) {
+            seq2[j] = seq2[j - 1u];
+            j--;
+        }
+        seq2[j] = x;
+    }
+    return m;
+}
+
+bool walk(uint m)
+{
+    int prefix = 0;
+    for (uint i = 0u; i < m; i++) {
+        seq_entry e = seq2[i];
+        prefix += e.delta;
+        bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
+        bool in_valid = e.interval >= 0 && iv_valid[e.interval];
+        if (is_candidate(e)) { // touches the pixel only: output unless hidden, never an occluder
+            if (prefix == 0 || in_valid)
+                output_id(e.id);
+            continue;
+        }
+        if (e.kind == TV_ENTRY_FRONT && in_valid) {
+            output_id(e.id);
+            continue;
+        }
+        if (!is_face || prefix > 0)
+            continue;
+        if (e.kind == TV_ENTRY_FRONT && e.interval < 0)
+            return false;
+        if (e.kind == TV_ENTRY_FRONT)
+            output_id(e.id);
+        return true;
+    }
+    return false;
+}
+
+void carry_range(uint n)
+{
+    float tail = uintBitsToFloat(0xFF800000u); // -inf
+    if (iv_run >= 0) {
+        tail = seq[iv_run].depth;
+    } else {
+        bool any = false;
+        for (uint i = 0u; i < n; i++) {
+            if (seq[i].kind == TV_ENTRY_FRONT || seq[i].kind == TV_ENTRY_BACK) {
+                tail = seq[i].depth;
+                any = true;
+            }
+        }
+        if (!any)
+            return;
+    }
+    float lo = uintBitsToFloat(0x7F800000u), hi = uintBitsToFloat(0xFF800000u);
+    if (hide_begin < hide_end && hide_begin <= tail && tail < hide_end) {
+        lo = hide_begin;
+        hi = hide_end;
+    }
+    for (uint v = 0u; v < iv_count; v++) {
+        float b = seq[iv_first[v]].depth;
+        if (iv_valid[v] && b <= tail && tail < iv_end[v]) {
+            lo = min(b, lo);
+            hi = max(iv_end[v], hi);
+        }
+    }
+    hide_begin = lo < hi ? lo : 0.0;
+    hide_end = lo < hi ? hi : 0.0;
+}
+
+bool carry_run(uint n)
+{
+    seq_entry next[TV_K_CARRY];
+    uint c = 0u;
+    for (uint i = iv_run < 0 ? n : uint(iv_run); i < n; i++) {
+        if (c == TV_K_CARRY)
+            return false;
+        next[c++] = seq[i];
+    }
+    uint run_entries = c;
+    for (uint i = 0u; i < run_entries; i++) {
+        float u = 0.0;
+        if (next[i].kind != TV_ENTRY_TRIM || !umbra_depth(next[i].id, u))
+            continue;
+        if (c == TV_K_CARRY)
+            return false;
+        next[c++] = make_entry(u, TV_ENTRY_UMBRA, next[i].id, 0);
+    }
+    for (uint i = 0u; i < c; i++)
+        carry[i] = next[i];
+    carry_count = c;
+    return true;
+}
+
+// pvs_resolve_pixel; returns true when the overflow policy handled it.
+bool resolve_pixel(out uint seq_len)
+{
+    seq_len = 0u;
+    if (stencil == TV_STENCIL_SEALED)
+        return false;
+    if (stencil == TV_STENCIL_UNTRIMMED && cnt.z == 0u)
+        return false;
+    if (stencil == TV_STENCIL_OVERFLOW || any(greaterThan(cnt, uvec4(view.k)))) {
+        resolve_overflow();
+        return true;
+    }
+    stencil = TV_STENCIL_TRIMMED;
+    uint n = gather();
+    seq_len = n;
+    form_intervals(n);
+    validate(n);
+    uint m = replace_backs(n);
+    if (walk(m)) {
+        stencil = TV_STENCIL_SEALED;
+        carry_count = 0u;
+        hide_begin = hide_end = 0.0;
+        return false;
+    }
+    carry_range(n);
+    if (!carry_run(n)) {
+        for (uint i = uint(iv_run); i < n; i++)
+            if (seq[i].kind == TV_ENTRY_FRONT)
+                output_id(seq[i].id);
+        stencil = TV_STENCIL_OVERFLOW;
+        carry_count = 0u;
+        hide_begin = hide_end = 0.0;
+        return true;
+    }
+    return false;
+}
+
+void main()
+{
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= counters[TV_PVS_C_ACTIVE])
+        return;
+    P = active_list[i];
+    KB = P * view.k;
+    cnt = pixcount[P];
+    uvec4 st = pixstate[P];
+    stencil = st.x;
+    carry_count = st.y;
+    hide_begin = uintBitsToFloat(st.z);
+    hide_end = uintBitsToFloat(st.w);
+    for (uint c = 0u; c < carry_count; c++) {
+        uvec4 e = carry_buf[P * TV_K_CARRY + c];
+        carry[c] = make_entry(uintBitsToFloat(e.x), e.y, e.z, 0);
+    }
+    n_out = 0u;
+    uint seq_len;
+    bool overflowed = resolve_pixel(seq_len);
+
+    pixstate[P] = uvec4(stencil, carry_count, floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
+    for (uint c = 0u; c < carry_count; c++)
+        carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
+    uvec4 stored = min(cnt, uvec4(view.k));
+    atomicAdd(layer_stats[pc.layer].x, 8u * (stored.x + stored.z + stored.w) + 4u * stored.y); // bytes
+    atomicAdd(layer_stats[pc.layer].y, 1u);
+    atomicAdd(layer_stats[pc.layer].z, seq_len);
+    if (overflowed)
+        atomicAdd(layer_stats[pc.layer].w, 1u);
+    active_flag[P] = 0u;
+}

@@ -1,0 +1,115 @@
+// pvs_trim.glsl - the trim quad and umbra quad of one silhouette edge: the
+// GLSL twin of pvs_trim_width_px (pvs/trim_width.c) and pvs_umbra_quad_make
+// (pvs/umbra.c), in normalised image units (focal length 1), plus what the
+// C references leave to P1: clipping the edge at the near plane and
+// clamping infinite widths.
+#ifndef TV_PVS_TRIM_GLSL
+#define TV_PVS_TRIM_GLSL
+
+#include "pvs_common.glsl"
+
+float pvs_view_depth(vec3 p) { return dot(p - view.apex.xyz, view.forward.xyz); }
+
+vec2 pvs_image(vec3 p, float depth)
+{
+    vec3 d = p - view.apex.xyz;
+    return vec2(dot(d, view.right.xyz), dot(d, view.up.xyz)) / depth;
+}
+
+vec3 pvs_unproject(vec2 image, float depth)
+{
+    return view.apex.xyz + depth * (view.forward.xyz + image.x * view.right.xyz + image.y * view.up.xyz);
+}
+
+float pvs_displacement(float a, float r, float depth, float sigma)
+{
+    return (r - a * sigma) * (view.far_dist - depth) / (view.far_dist * (depth - a));
+}
+
+// Inward extrusion of a silhouette point at `depth` with outward image
+// coordinate sigma; one pixel is added for the pixel-centre sampling of the
+// edge itself, and the infinite widths near v* are clamped to the image.
+float pvs_trim_width(float depth, float sigma)
+{
+    float z = view.delta / view.tan_alpha;
+    if (depth >= view.far_dist)
+        return 1.0 / view.focal_px;
+    if (depth <= 2.0 * z)
+        return view.max_width;
+    float base = pvs_displacement(z, view.delta, depth, sigma);
+    float tip = pvs_displacement(2.0 * z, 0.0, depth, sigma);
+    return min(max(0.0, max(base, tip)) + 1.0 / view.focal_px, view.max_width);
+}
+
+// Depth at which the v* ray through `image` meets the plane (n, p), or
+// `fallback` when it meets it behind the near plane or not at all.
+float pvs_plane_depth(vec2 image, vec3 n, vec3 p, float fallback)
+{
+    vec3 r = view.forward.xyz + image.x * view.right.xyz + image.y * view.up.xyz;
+    float den = dot(n, r);
+    float t = den != 0.0 ? dot(n, p - view.apex.xyz) / den : -1.0;
+    return t > view.near_dist && !isinf(t) ? t : fallback;
+}
+
+// Depth of a trim corner: the trim fragments must lie in [f, b] of the
+// intervals they validate, and near the edge the solid lies between the
+// planes of its front triangle (nf, pf) and back neighbour (nb, pb): the
+// midpoint of the two ray/plane depths. A border or non-manifold edge has
+// only its own triangle's plane (has_back false): the trim then ties with
+// the front, and ties sort fronts first (docs/trim-regions.md).
+float pvs_trim_depth(vec2 image, float edge_depth, vec3 nf, vec3 pf, bool has_back, vec3 nb, vec3 pb)
+{
+    float f = pvs_plane_depth(image, nf, pf, edge_depth);
+    return has_back ? 0.5 * (f + pvs_plane_depth(image, nb, pb, edge_depth)) : f;
+}
+
+// Writes e0, e1 (clipped to the near plane), the trim corners behind the
+// extruded e1 and e0, and the umbra's far corners behind them. `inside` is
+// the third vertex of the occluder-side triangle (its plane: nf through e0);
+// nb, pb the back neighbour's plane when has_back. Returns false when the
+// edge lies behind the near plane, projects to a point, or its occluder
+// side cannot be told (the triangle is seen edge-on).
+bool pvs_trim_quad(vec3 e0, vec3 e1, vec3 inside, bool has_back, vec3 nb, vec3 pb, out vec3 c[6])
+{
+    vec3 nf = cross(e1 - e0, inside - e0), pf = e0;
+    float nearc = view.near_dist;
+    float d0 = pvs_view_depth(e0), d1 = pvs_view_depth(e1);
+    if (d0 <= nearc && d1 <= nearc)
+        return false;
+    if (d0 <= nearc) {
+        e0 += (nearc - d0) / (d1 - d0) * (e1 - e0);
+        d0 = nearc;
+    } else if (d1 <= nearc) {
+        e1 += (nearc - d1) / (d0 - d1) * (e0 - e1);
+        d1 = nearc;
+    }
+    // Any point of the triangle between the edge and `inside` projects to
+    // the occluder side: pull `inside` in front of the near plane if needed.
+    vec3 mid = 0.5 * (e0 + e1);
+    float dm = pvs_view_depth(mid), dq = pvs_view_depth(inside);
+    if (dq <= nearc)
+        inside = mid + (0.5 * (dm - nearc) / (dm - dq)) * (inside - mid);
+    vec2 i0 = pvs_image(e0, d0), i1 = pvs_image(e1, d1);
+    vec2 iq = pvs_image(inside, pvs_view_depth(inside));
+    vec2 t = i1 - i0;
+    float len = length(t);
+    if (len == 0.0)
+        return false;
+    vec2 n = vec2(-t.y, t.x) / len;
+    float side = dot(n, iq - i0);
+    if (side == 0.0)
+        return false;
+    if (side > 0.0)
+        n = -n; // n points away from the occluder
+    vec2 x0 = i0 - pvs_trim_width(d0, dot(i0, n)) * n;
+    vec2 x1 = i1 - pvs_trim_width(d1, dot(i1, n)) * n;
+    c[0] = e0;
+    c[1] = e1;
+    c[2] = pvs_unproject(x1, pvs_trim_depth(x1, d1, nf, pf, has_back, nb, pb));
+    c[3] = pvs_unproject(x0, pvs_trim_depth(x0, d0, nf, pf, has_back, nb, pb));
+    c[4] = pvs_unproject(x1, view.far_dist);
+    c[5] = pvs_unproject(x0, view.far_dist);
+    return true;
+}
+
+#endif
