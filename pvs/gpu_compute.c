@@ -1,0 +1,393 @@
+/* gpu_compute.c - pvs_compute: P0 on the CPU, then one command buffer with
+ * P1-P3 per layer and P4, one submission, one wait; the flag buffer is then
+ * compacted on the CPU into the sorted id list. */
+#include "gpu_internal.h"
+
+#include "clock.h"
+
+#include <assert.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cglm/cglm.h>
+
+/* Raster far plane relative to the PVS far plane: the umbra quads' far
+ * corners lie exactly on the latter and must not be clipped. */
+#define PVS_RASTER_FAR_SCALE 1.01f
+
+static bool finite3(const float v[3])
+{
+    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
+}
+
+static bool check_viewcell(const pvs_viewcell* vc, char* err, size_t err_size)
+{
+    vec3 f = {vc->forward[0], vc->forward[1], vc->forward[2]}, u = {vc->up[0], vc->up[1], vc->up[2]}, c;
+    glm_vec3_cross(f, u, c);
+    const char* why = !finite3(vc->v0) || !finite3(vc->forward) || !finite3(vc->up) || !isfinite(vc->delta) ||
+                              !isfinite(vc->far_m)
+                          ? "non-finite value"
+                      : glm_vec3_norm(f) == 0.0f                               ? "zero forward vector"
+                      : glm_vec3_norm(c) <= 1e-6f * glm_vec3_norm(f) * glm_vec3_norm(u) ? "up parallel to forward"
+                      : !(vc->delta >= 0.0f)                                   ? "negative delta"
+                      : !(vc->fov_pvs_deg > 0.0f && vc->fov_pvs_deg < 180.0f) ? "fov_pvs_deg outside (0, 180)"
+                      : !(vc->far_m > 0.0f)                                    ? "far_m <= 0"
+                                                                               : NULL;
+    if (why)
+        snprintf(err, err_size, "pvs_compute: invalid viewcell: %s", why);
+    return why == NULL;
+}
+
+/* Vertical FOV of the PVS frustum: fov_pvs_deg spans the smaller axis, so
+ * the frustum contains the square one of half-angle α that predict/ sizes
+ * the viewcell for (docs/prediction.md) at any resolution. */
+static float fov_y_deg(const pvs_context* ctx, const pvs_viewcell* vc)
+{
+    float aspect = (float)ctx->width / (float)ctx->height;
+    return aspect >= 1.0f ? vc->fov_pvs_deg : rnd_fov_y_from_x(vc->fov_pvs_deg, aspect);
+}
+
+/* z = Δ / tan α: the apex lies z behind v0 (paper section 3.4). */
+static float apex_offset(const pvs_viewcell* vc)
+{
+    return vc->delta / tanf(glm_rad(vc->fov_pvs_deg) * 0.5f);
+}
+
+/* Far plane from v*: an eye up to 2z ahead of v* sees far_m further. */
+static float far_dist(const pvs_viewcell* vc)
+{
+    return vc->far_m + 2.0f * apex_offset(vc);
+}
+
+rnd_camera pvs_apex_camera(const pvs_context* ctx, const pvs_viewcell* vc)
+{
+    vec3 f = {vc->forward[0], vc->forward[1], vc->forward[2]}, up = {vc->up[0], vc->up[1], vc->up[2]};
+    glm_vec3_normalize(f);
+    float z = apex_offset(vc);
+    rnd_camera cam = {.fov_y_deg = fov_y_deg(ctx, vc), .near_m = ctx->near_m,
+                      .far_m = far_dist(vc) * PVS_RASTER_FAR_SCALE};
+    for (int i = 0; i < 3; i++)
+        cam.position[i] = vc->v0[i] - z * f[i];
+    versor q;
+    glm_quat_for(f, up, q);
+    memcpy(cam.orientation, q, sizeof q);
+    return cam;
+}
+
+static pvs_view layer_view(const pvs_context* ctx, const pvs_viewcell* vc, const rnd_camera* cam)
+{
+    pvs_view v = {.fov_y_deg = cam->fov_y_deg,
+                  .aspect = (float)ctx->width / (float)ctx->height,
+                  .near_dist = ctx->near_m,
+                  .far_dist = far_dist(vc)};
+    memcpy(v.apex, cam->position, sizeof v.apex);
+    memcpy(v.forward, vc->forward, sizeof v.forward);
+    memcpy(v.up, vc->up, sizeof v.up);
+    return v;
+}
+
+static void write_view(pvs_context* ctx, const pvs_viewcell* vc, const rnd_camera* cam, const pvs_view* v)
+{
+    pvs_view_frame fr = pvs_view_frame_make(v);
+    pvs_view_gpu g = {.tan_half_x = fr.tan_half_x,
+                      .tan_half_y = fr.tan_half_y,
+                      .tan_alpha = tanf(glm_rad(vc->fov_pvs_deg) * 0.5f),
+                      .far_dist = v->far_dist,
+                      .near_dist = v->near_dist,
+                      .delta = vc->delta,
+                      .focal_px = 0.5f * (float)ctx->height / fr.tan_half_y,
+                      /* from any edge point in the image, this reaches across it */
+                      .max_width = 4.0f * (fr.tan_half_x + fr.tan_half_y),
+                      .width = ctx->width,
+                      .height = ctx->height,
+                      .k = ctx->k,
+                      .triangle_count = ctx->triangle_count};
+    rnd_camera_view_proj(cam, v->aspect, g.view_proj);
+    for (int i = 0; i < 3; i++) {
+        g.apex[i] = v->apex[i];
+        g.forward[i] = fr.forward[i];
+        g.right[i] = fr.right[i];
+        g.up[i] = fr.up[i];
+    }
+    memcpy(ctx->buffers[TV_PVS_BIND_VIEW].mapped, &g, sizeof g);
+}
+
+static void barrier(VkCommandBuffer cmd)
+{
+    /* Each phase consumes everything the previous one wrote (buffers, the
+     * indirect commands, attachments), so one full memory barrier suffices;
+     * the passes are far coarser than its cost. */
+    VkMemoryBarrier2 mb = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                           .srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                           .srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT,
+                           .dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                           .dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+    VkDependencyInfo dep = {.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
+                            .pMemoryBarriers = &mb};
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+/* Per-layer slots of the counters buffer (empty draws, an empty dispatch)
+ * and the per-pixel k-buffer counters. */
+static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
+{
+    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_PIXCOUNT].buffer, 0, VK_WHOLE_SIZE, 0);
+    uint32_t c[TV_PVS_C_PER_LAYER] = {0};
+    for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_UMBRA; d += 4)
+        c[d + 1] = 1; /* instanceCount */
+    c[TV_PVS_C_DISPATCH + 1] = c[TV_PVS_C_DISPATCH + 2] = 1;
+    vkCmdUpdateBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, 0, sizeof c, c);
+}
+
+static void draw_indirect(pvs_context* ctx, VkCommandBuffer cmd, int pipe, uint32_t kind, uint32_t slot)
+{
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ctx->pipelines[pipe]);
+    vkCmdPushConstants(cmd, ctx->layout,
+                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT,
+                       offsetof(pvs_push, kind), sizeof(uint32_t), &kind);
+    vkCmdDrawIndirect(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, slot * sizeof(uint32_t), 1,
+                      sizeof(VkDrawIndirectCommand));
+}
+
+/* One dynamic-rendering pass on visibility buffer `vis` (0 exact, 1 wide):
+ * clear only, or P2's draws of the current layer (the wide pass draws the
+ * faces only, dilated, for the visibility buffer). */
+static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, int vis, bool clear)
+{
+    VkRenderingAttachmentInfo color = {.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                       .imageView = ctx->vis_ids[vis].view,
+                                       .imageLayout = VK_IMAGE_LAYOUT_GENERAL,
+                                       .loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
+                                       .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                       .clearValue.color.uint32 = {TV_NO_TRIANGLE, 0, 0, 0}};
+    VkRenderingAttachmentInfo depth = {.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                       .imageView = ctx->vis_depth[vis].view,
+                                       .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                       .loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
+                                       .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                       .clearValue.depthStencil = {1.0f, 0}};
+    VkRect2D area = {{0, 0}, {ctx->width, ctx->height}};
+    VkRenderingInfo info = {.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                            .renderArea = area,
+                            .layerCount = 1,
+                            .colorAttachmentCount = 1,
+                            .pColorAttachments = &color,
+                            .pDepthAttachment = &depth};
+    vkCmdBeginRendering(cmd, &info);
+    if (!clear) {
+        vkCmdSetViewport(cmd, 0, 1, &(VkViewport){0.0f, 0.0f, (float)ctx->width, (float)ctx->height, 0.0f, 1.0f});
+        vkCmdSetScissor(cmd, 0, 1, &area);
+        const uint32_t wide = vis ? TV_PVS_KIND_WIDE : 0u;
+        draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | wide, TV_PVS_C_DRAW_FF);
+        draw_indirect(ctx, cmd, PVS_PIPE_BF, TV_PVS_KIND_BACK | wide, TV_PVS_C_DRAW_BF);
+        if (!vis) {
+            draw_indirect(ctx, cmd, PVS_PIPE_TRIM, TV_PVS_KIND_TRIM, TV_PVS_C_DRAW_TRIM);
+            draw_indirect(ctx, cmd, PVS_PIPE_UMBRA, TV_PVS_KIND_UMBRA, TV_PVS_C_DRAW_UMBRA);
+        }
+    }
+    vkCmdEndRendering(cmd);
+}
+
+static void reset_buffers(pvs_context* ctx, VkCommandBuffer cmd)
+{
+    const uint32_t zeroed[] = {TV_PVS_BIND_COUNTERS, TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE,
+                               TV_PVS_BIND_ACTIVE, TV_PVS_BIND_TRI_FLAGS, TV_PVS_BIND_LAYER_STATS};
+    for (size_t i = 0; i < sizeof zeroed / sizeof zeroed[0]; i++)
+        vkCmdFillBuffer(cmd, ctx->buffers[zeroed[i]].buffer, 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_CENTRE_DEPTH].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
+    for (int v = 0; v < 2; v++) {
+        rnd_image_barrier(cmd, ctx->vis_ids[v].image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                          VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
+                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        rnd_image_barrier(
+            cmd, ctx->vis_depth[v].image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+            VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
+            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+        render_pass(ctx, cmd, v, true);
+    }
+    barrier(cmd);
+}
+
+/* Timestamps: one before everything, then one after each of P1, P2, P3 of
+ * every layer, one after P4. */
+static bool reserve_timestamps(pvs_context* ctx, uint32_t count, char* err, size_t err_size)
+{
+    if (!ctx->rnd->timestamps || count <= ctx->timestamp_capacity)
+        return true;
+    if (ctx->timestamps)
+        vkDestroyQueryPool(ctx->rnd->device, ctx->timestamps, NULL);
+    ctx->timestamps = VK_NULL_HANDLE;
+    ctx->timestamp_capacity = 0;
+    VkQueryPoolCreateInfo info = {.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
+                                  .queryType = VK_QUERY_TYPE_TIMESTAMP,
+                                  .queryCount = count + count / 2};
+    if (!RND_VK_OK(vkCreateQueryPool(ctx->rnd->device, &info, NULL, &ctx->timestamps), err, err_size))
+        return false;
+    ctx->timestamp_capacity = info.queryCount;
+    return true;
+}
+
+static void timestamp(pvs_context* ctx, VkCommandBuffer cmd, uint32_t* index)
+{
+    if (ctx->timestamps)
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ctx->timestamps, (*index)++);
+}
+
+static void record(pvs_context* ctx, VkCommandBuffer cmd)
+{
+    const pvs_layers* L = &ctx->layers;
+    uint32_t ts = 0;
+    if (ctx->timestamps)
+        vkCmdResetQueryPool(cmd, ctx->timestamps, 0, 3 * L->layer_count + 2);
+    timestamp(ctx, cmd, &ts);
+    reset_buffers(ctx, cmd);
+    VkDescriptorSet sets[2];
+    sets[TV_SET_SCENE] = ctx->gpu->set;
+    sets[TV_PVS_SET] = ctx->set;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->layout, 0, 2, sets, 0, NULL);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ctx->layout, 0, 2, sets, 0, NULL);
+    const VkShaderStageFlags stages =
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
+    for (uint32_t l = 0; l < L->layer_count; l++) {
+        pvs_push push = {.layer_offset = L->tri_offsets[l],
+                         .layer_count = L->tri_offsets[l + 1] - L->tri_offsets[l],
+                         .layer = l};
+        vkCmdPushConstants(cmd, ctx->layout, stages, 0, sizeof push, &push);
+        reset_layer_counters(ctx, cmd);
+        barrier(cmd);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_CLASSIFY]);
+        vkCmdDispatch(cmd, (push.layer_count + TV_WG_SIZE - 1) / TV_WG_SIZE, 1, 1);
+        barrier(cmd);
+        timestamp(ctx, cmd, &ts);
+        render_pass(ctx, cmd, 0, false);
+        barrier(cmd); /* the dilated pass reads the exact pass's centre depths */
+        render_pass(ctx, cmd, 1, false);
+        barrier(cmd);
+        timestamp(ctx, cmd, &ts);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE]);
+        vkCmdDispatchIndirect(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, TV_PVS_C_DISPATCH * sizeof(uint32_t));
+        barrier(cmd);
+        timestamp(ctx, cmd, &ts);
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_GATHER]);
+    vkCmdDispatch(cmd, (ctx->width + 7) / 8, (ctx->height + 7) / 8, 1);
+    VkMemoryBarrier2 host = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                             .srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                             .srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT,
+                             .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
+                             .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
+    vkCmdPipelineBarrier2(cmd, &(VkDependencyInfo){.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                                   .memoryBarrierCount = 1,
+                                                   .pMemoryBarriers = &host});
+    timestamp(ctx, cmd, &ts);
+}
+
+/* Per-phase GPU milliseconds from the timestamps of record(). */
+static void read_timestamps(pvs_context* ctx, pvs_stats* st)
+{
+    uint32_t n = 3 * ctx->layers.layer_count + 2;
+    uint64_t* t = malloc(sizeof(uint64_t) * n);
+    if (!t || vkGetQueryPoolResults(ctx->rnd->device, ctx->timestamps, 0, n, sizeof(uint64_t) * n, t,
+                                    sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) != VK_SUCCESS) {
+        free(t);
+        return;
+    }
+    const double ms = ctx->rnd->props.limits.timestampPeriod * 1e-6;
+    for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+        for (int p = 0; p < 3; p++)
+            st->ms[1 + p] += (double)(t[1 + 3 * l + p] - t[3 * l + p]) * ms; /* layer 0's P1 includes the resets */
+    }
+    st->ms[4] = (double)(t[n - 1] - t[n - 2]) * ms;
+    free(t);
+}
+
+static bool compact(pvs_context* ctx, pvs_result* out, char* err, size_t err_size)
+{
+    const uint32_t* flags = ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped;
+    uint32_t count = 0;
+    for (uint32_t t = 0; t < ctx->triangle_count; t++)
+        count += flags[t] != 0;
+    uint32_t* ids = realloc(ctx->result, sizeof(uint32_t) * (count ? count : 1));
+    if (!ids) {
+        snprintf(err, err_size, "pvs_compute: out of memory for %u ids", count);
+        return false;
+    }
+    ctx->result = ids;
+    uint32_t n = 0;
+    for (uint32_t t = 0; t < ctx->triangle_count; t++) {
+        if (flags[t])
+            ids[n++] = t;
+    }
+    out->ids = ids;
+    out->count = count;
+    return true;
+}
+
+static void collect_stats(pvs_context* ctx, pvs_stats* st)
+{
+    const uint32_t* c = ctx->buffers[TV_PVS_BIND_COUNTERS].mapped;
+    const uint32_t* ls = ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped;
+    st->layers = ctx->layers.layer_count;
+    st->layer_triangles = ctx->layers.tri_count;
+    st->silhouettes = c[TV_PVS_C_REGIONS];
+    st->overflow_fronts = c[TV_PVS_C_OVERFLOW_FRONTS];
+    uint64_t seq = 0;
+    for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+        const uint32_t* s = ls + 4 * l;
+        st->kbuffer_bytes_used = s[0] > st->kbuffer_bytes_used ? s[0] : st->kbuffer_bytes_used;
+        st->active_pixels += s[1];
+        seq += s[2];
+        st->overflow_pixels += s[3];
+    }
+    st->mean_sequence = st->active_pixels ? (double)seq / (double)st->active_pixels : 0.0;
+    for (uint32_t b = TV_PVS_BIND_KFRONT; b <= TV_PVS_BIND_KUMBRA; b++)
+        st->kbuffer_bytes += ctx->buffers[b].size;
+}
+
+bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char* err, size_t err_size)
+{
+    assert(ctx && vc && out);
+    const double start = tv_now_ms();
+    if (!check_viewcell(vc, err, err_size))
+        return false;
+    *out = (pvs_result){0};
+    pvs_stats* st = &out->stats;
+    rnd_camera cam = pvs_apex_camera(ctx, vc);
+    pvs_view view = layer_view(ctx, vc, &cam);
+    if (!pvs_layers_build(&ctx->octree, &view, &ctx->layers, err, err_size))
+        return false;
+    const pvs_layers* L = &ctx->layers;
+    uint32_t widest = 0;
+    for (uint32_t l = 0; l < L->layer_count; l++) {
+        uint32_t n = L->tri_offsets[l + 1] - L->tri_offsets[l];
+        widest = n > widest ? n : widest;
+    }
+    if (!pvs_reserve(ctx, widest, L->layer_count, err, err_size) ||
+        !reserve_timestamps(ctx, 3 * L->layer_count + 2, err, err_size))
+        return false;
+    memcpy(ctx->buffers[TV_PVS_BIND_LAYER_TRIS].mapped, L->tri_ids, sizeof(uint32_t) * L->tri_count);
+    write_view(ctx, vc, &cam, &view);
+    st->ms[0] = tv_now_ms() - start;
+
+    const double gpu_start = tv_now_ms();
+    if (!rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size))
+        return false;
+    record(ctx, ctx->stream.cmd);
+    if (!rnd_stream_submit_wait(ctx->rnd, &ctx->stream, err, err_size))
+        return false;
+    if (ctx->timestamps)
+        read_timestamps(ctx, st);
+    else
+        st->ms[2] = tv_now_ms() - gpu_start;
+
+    const double p4 = tv_now_ms();
+    if (!compact(ctx, out, err, err_size))
+        return false;
+    collect_stats(ctx, st);
+    st->ms[4] += tv_now_ms() - p4;
+    st->total_ms = tv_now_ms() - start;
+    return true;
+}

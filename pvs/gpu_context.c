@@ -1,0 +1,240 @@
+/* gpu_context.c - pvs_create / pvs_destroy: welding and adjacency, the
+ * octree, the per-pixel GPU buffers (sized once from the resolution and k)
+ * and the per-layer buffers (grown on demand by pvs_reserve). */
+#include "gpu_internal.h"
+
+#include "log.h"
+#include "weld.h"
+
+#include <assert.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#define PVS_DEFAULT_WIDTH 512u
+#define PVS_DEFAULT_HEIGHT 512u
+#define PVS_DEFAULT_K 16u
+#define PVS_DEFAULT_NEAR 0.01f
+
+static const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+/* Bindings the CPU writes or reads back live in host-visible memory. */
+static bool host_visible(uint32_t binding)
+{
+    return binding == TV_PVS_BIND_VIEW || binding == TV_PVS_BIND_LAYER_TRIS || binding == TV_PVS_BIND_COUNTERS ||
+           binding == TV_PVS_BIND_TRI_FLAGS || binding == TV_PVS_BIND_LAYER_STATS;
+}
+
+static bool create_buffer(pvs_context* ctx, uint32_t binding, VkDeviceSize size, char* err, size_t err_size)
+{
+    if (size > ctx->rnd->props.limits.maxStorageBufferRange) {
+        snprintf(err, err_size,
+                 "pvs: buffer %u needs %llu bytes, over maxStorageBufferRange %u (lower the resolution or k)",
+                 binding, (unsigned long long)size, ctx->rnd->props.limits.maxStorageBufferRange);
+        return false;
+    }
+    VkBufferUsageFlags usage = storage;
+    if (binding == TV_PVS_BIND_COUNTERS)
+        usage |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+    rnd_buffer_destroy(ctx->rnd, &ctx->buffers[binding]);
+    return rnd_buffer_create(ctx->rnd, size, usage, host_visible(binding), &ctx->buffers[binding], err, err_size);
+}
+
+void pvs_write_descriptors(pvs_context* ctx)
+{
+    VkDescriptorBufferInfo infos[TV_PVS_BINDINGS];
+    VkWriteDescriptorSet writes[TV_PVS_BINDINGS];
+    VkDescriptorImageInfo images[2] = {{.imageView = ctx->vis_ids[0].view, .imageLayout = VK_IMAGE_LAYOUT_GENERAL},
+                                       {.imageView = ctx->vis_ids[1].view, .imageLayout = VK_IMAGE_LAYOUT_GENERAL}};
+    for (uint32_t i = 0; i < TV_PVS_BINDINGS; i++) {
+        infos[i] = (VkDescriptorBufferInfo){ctx->buffers[i].buffer, 0, VK_WHOLE_SIZE};
+        bool is_image = i == TV_PVS_BIND_VIS_IDS || i == TV_PVS_BIND_VIS_WIDE;
+        writes[i] = (VkWriteDescriptorSet){
+            .sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+            .dstSet = ctx->set,
+            .dstBinding = i,
+            .descriptorCount = 1,
+            .descriptorType = is_image ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+            .pBufferInfo = is_image ? NULL : &infos[i],
+            .pImageInfo = is_image ? &images[i == TV_PVS_BIND_VIS_WIDE] : NULL,
+        };
+    }
+    vkUpdateDescriptorSets(ctx->rnd->device, TV_PVS_BINDINGS, writes, 0, NULL);
+}
+
+bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* err, size_t err_size)
+{
+    triangles = triangles ? triangles : 1;
+    layers = layers ? layers : 1;
+    bool grow_tris = triangles > ctx->list_capacity, grow_layers = layers > ctx->layer_capacity;
+    if (!grow_tris && !grow_layers)
+        return true;
+    if (grow_tris) {
+        VkDeviceSize n = triangles + triangles / 2;
+        if (!create_buffer(ctx, TV_PVS_BIND_FF, n * 4, err, err_size) ||
+            !create_buffer(ctx, TV_PVS_BIND_BF, n * 4, err, err_size) ||
+            !create_buffer(ctx, TV_PVS_BIND_SIL, n * 3 * TV_PVS_SIL_VEC4 * 16, err, err_size))
+            return false;
+        ctx->list_capacity = (uint32_t)n;
+    }
+    if (grow_layers) {
+        uint32_t n = layers + layers / 2;
+        if (!create_buffer(ctx, TV_PVS_BIND_LAYER_STATS, (VkDeviceSize)n * 16, err, err_size))
+            return false;
+        ctx->layer_capacity = n;
+    }
+    pvs_write_descriptors(ctx);
+    return true;
+}
+
+/* Buffers sized by the scene or the resolution, created once. */
+static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
+{
+    const VkDeviceSize pixels = (VkDeviceSize)ctx->width * ctx->height;
+    const VkDeviceSize slots = pixels * ctx->k;
+    const VkDeviceSize tris = ctx->triangle_count ? ctx->triangle_count : 1;
+    struct {
+        uint32_t binding;
+        VkDeviceSize size;
+    } fixed[] = {
+        {TV_PVS_BIND_VIEW, sizeof(pvs_view_gpu)},
+        {TV_PVS_BIND_ADJ, tris * 12},
+        {TV_PVS_BIND_LAYER_TRIS, tris * 4},
+        {TV_PVS_BIND_COUNTERS, TV_PVS_C_COUNT * 4},
+        {TV_PVS_BIND_KFRONT, slots * 8},
+        {TV_PVS_BIND_KBACK, slots * 4},
+        {TV_PVS_BIND_KTRIM, slots * 8},
+        {TV_PVS_BIND_KUMBRA, slots * 8},
+        {TV_PVS_BIND_PIXCOUNT, pixels * 16},
+        {TV_PVS_BIND_PIXSTATE, pixels * 16},
+        {TV_PVS_BIND_CARRY, pixels * TV_K_CARRY * 16},
+        {TV_PVS_BIND_ACTIVE, pixels * 4},
+        {TV_PVS_BIND_ACTIVE_LIST, pixels * 4},
+        {TV_PVS_BIND_TRI_FLAGS, tris * 4},
+        {TV_PVS_BIND_CENTRE_DEPTH, pixels * 4},
+    };
+    for (size_t i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
+        if (!create_buffer(ctx, fixed[i].binding, fixed[i].size, err, err_size))
+            return false;
+    }
+    for (int i = 0; i < 2; i++) {
+        if (!rnd_image_create(ctx->rnd, ctx->width, ctx->height, 1, VK_IMAGE_VIEW_TYPE_2D, PVS_VIS_ID_FORMAT,
+                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT, &ctx->vis_ids[i],
+                              err, err_size) ||
+            !rnd_image_create(ctx->rnd, ctx->width, ctx->height, 1, VK_IMAGE_VIEW_TYPE_2D, PVS_VIS_DEPTH_FORMAT,
+                              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, &ctx->vis_depth[i], err, err_size))
+            return false;
+    }
+    return true;
+}
+
+/* Welded adjacency, uploaded once: P1 finds silhouettes with it. */
+static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err, size_t err_size)
+{
+    if (scene->triangle_count == 0)
+        return true;
+    uint32_t* remap = malloc(sizeof(uint32_t) * (scene->vertex_count ? scene->vertex_count : 1));
+    uint32_t* adjacency = malloc(sizeof(uint32_t) * 3 * (size_t)scene->triangle_count);
+    bool ok = remap && adjacency;
+    if (!ok)
+        snprintf(err, err_size, "pvs: out of memory for the adjacency of %s", scene->name);
+    if (ok) {
+        scn_weld_positions(remap, scene->positions, scene->vertex_count);
+        scn_build_adjacency(adjacency, scene->indices, scene->triangle_count, remap);
+        rnd_staging staging = {0};
+        ok = rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size) &&
+             rnd_upload_buffer(ctx->rnd, ctx->stream.cmd, &staging, adjacency,
+                               sizeof(uint32_t) * 3 * (VkDeviceSize)scene->triangle_count,
+                               ctx->buffers[TV_PVS_BIND_ADJ].buffer, err, err_size) &&
+             rnd_stream_submit_wait(ctx->rnd, &ctx->stream, err, err_size);
+        rnd_staging_release(ctx->rnd, &staging);
+    }
+    free(remap);
+    free(adjacency);
+    return ok;
+}
+
+static bool check_desc(const pvs_desc* d, char* err, size_t err_size)
+{
+    if (d->k > TV_K_FRONT || d->k > TV_K_BACK || d->k > TV_K_TRIM || d->k > TV_K_UMBRA) {
+        snprintf(err, err_size, "pvs: k = %u exceeds the shader capacity TV_K_* = %u", d->k, TV_K_FRONT);
+        return false;
+    }
+    if (!(d->near_m >= 0.0f)) {
+        snprintf(err, err_size, "pvs: near_m must be >= 0 (0 = default)");
+        return false;
+    }
+    return true;
+}
+
+pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu, const pvs_desc* desc,
+                        char* err, size_t err_size)
+{
+    assert(rnd && scene && gpu);
+    pvs_desc d = desc ? *desc : (pvs_desc){0};
+    if (!check_desc(&d, err, err_size))
+        return NULL;
+    if (scene->triangle_count >= TV_ID_CANDIDATE) {
+        snprintf(err, err_size, "pvs: %s has %u triangles, the PVS handles fewer than %u", scene->name,
+                 scene->triangle_count, TV_ID_CANDIDATE);
+        return NULL;
+    }
+    if (rnd_scene_triangle_count(gpu) != scene->triangle_count) {
+        snprintf(err, err_size, "pvs: %s has %u triangles but the GPU scene %u", scene->name,
+                 scene->triangle_count, rnd_scene_triangle_count(gpu));
+        return NULL;
+    }
+    pvs_context* ctx = calloc(1, sizeof *ctx);
+    if (!ctx) {
+        snprintf(err, err_size, "pvs: out of memory");
+        return NULL;
+    }
+    ctx->rnd = rnd;
+    ctx->gpu = gpu;
+    ctx->width = d.width ? d.width : PVS_DEFAULT_WIDTH;
+    ctx->height = d.height ? d.height : PVS_DEFAULT_HEIGHT;
+    ctx->k = d.k ? d.k : PVS_DEFAULT_K;
+    ctx->near_m = d.near_m > 0.0f ? d.near_m : PVS_DEFAULT_NEAR;
+    ctx->triangle_count = scene->triangle_count;
+    const VkDescriptorPoolSize pool_sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, TV_PVS_BINDINGS - 2},
+                                                {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2}};
+    pvs_octree_desc od = {.max_triangles_per_leaf = d.octree_cap, .max_depth = d.octree_depth};
+    bool ok = pvs_octree_build(&od, scene, &ctx->octree, err, err_size) &&
+              rnd_stream_create(rnd, &ctx->stream, err, err_size) && pvs_pipelines_create(ctx, err, err_size) &&
+              create_fixed_buffers(ctx, err, err_size) &&
+              rnd_descriptor_set_create(rnd, ctx->set_layout, pool_sizes, 2, &ctx->pool, &ctx->set, err, err_size) &&
+              pvs_reserve(ctx, 1, 1, err, err_size) && upload_adjacency(ctx, scene, err, err_size);
+    if (!ok) {
+        pvs_destroy(ctx);
+        return NULL;
+    }
+    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u, k = %u, k-buffers %.1f MiB", scene->name,
+           ctx->octree.leaf_count, ctx->width, ctx->height, ctx->k,
+           (double)(ctx->buffers[TV_PVS_BIND_KFRONT].size + ctx->buffers[TV_PVS_BIND_KBACK].size +
+                    ctx->buffers[TV_PVS_BIND_KTRIM].size + ctx->buffers[TV_PVS_BIND_KUMBRA].size) /
+               (1024.0 * 1024.0));
+    return ctx;
+}
+
+void pvs_destroy(pvs_context* ctx)
+{
+    if (!ctx)
+        return;
+    rnd_context* r = ctx->rnd;
+    vkDeviceWaitIdle(r->device);
+    pvs_pipelines_destroy(ctx);
+    if (ctx->pool)
+        vkDestroyDescriptorPool(r->device, ctx->pool, NULL);
+    if (ctx->timestamps)
+        vkDestroyQueryPool(r->device, ctx->timestamps, NULL);
+    for (uint32_t i = 0; i < TV_PVS_BINDINGS; i++)
+        rnd_buffer_destroy(r, &ctx->buffers[i]);
+    for (int i = 0; i < 2; i++) {
+        rnd_image_destroy(r, &ctx->vis_ids[i]);
+        rnd_image_destroy(r, &ctx->vis_depth[i]);
+    }
+    rnd_stream_destroy(r, &ctx->stream);
+    pvs_layers_free(&ctx->layers);
+    pvs_octree_free(&ctx->octree);
+    free(ctx->result);
+    free(ctx);
+}

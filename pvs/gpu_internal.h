@@ -1,0 +1,79 @@
+/* gpu_internal.h - the objects behind pvs_context, shared by the files of the
+ * GPU half of the PVS (gpu_context.c: creation, gpu_pipelines.c: pipelines,
+ * gpu_compute.c: one computation). Not a public header. */
+#ifndef TRIMVR_PVS_GPU_INTERNAL_H
+#define TRIMVR_PVS_GPU_INTERNAL_H
+
+#include "layers.h"
+#include "octree.h"
+#include "pvs.h"
+#include "vk_internal.h"
+
+#include "config.h"
+#include "pvs_layout.glsl"
+
+/* Mirrors pvs_view_gpu in shaders/pvs_common.glsl (std430). */
+typedef struct pvs_view_gpu {
+    float view_proj[16];
+    float apex[4], forward[4], right[4], up[4];
+    float tan_half_x, tan_half_y, tan_alpha, far_dist; /* far_dist: PVS far plane from v* */
+    float near_dist, delta, focal_px, max_width;      /* max_width: clamp of infinite trim widths */
+    uint32_t width, height, k, triangle_count;
+} pvs_view_gpu;
+
+/* Push constants of every PVS pipeline (mirrors pvs_common.glsl). */
+typedef struct pvs_push {
+    uint32_t layer_offset; /* first triangle of the layer in the layer list */
+    uint32_t layer_count;  /* triangles in the layer */
+    uint32_t layer;        /* layer index (statistics) */
+    uint32_t kind;         /* TV_PVS_KIND_* for the P2 pipelines */
+} pvs_push;
+
+enum { PVS_PIPE_CLASSIFY, PVS_PIPE_RESOLVE, PVS_PIPE_GATHER, PVS_PIPE_FF, PVS_PIPE_BF, PVS_PIPE_TRIM,
+       PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
+
+/* Buffers indexed by their binding (TV_PVS_BIND_*; VIS_IDS and VIS_WIDE
+ * are images). */
+struct pvs_context {
+    rnd_context* rnd;
+    const rnd_gpu_scene* gpu;
+    uint32_t width, height, k;
+    float near_m;
+    uint32_t triangle_count;
+
+    pvs_octree octree;
+    pvs_layers layers;
+
+    rnd_stream stream;
+    VkQueryPool timestamps; /* 2 per phase-step, VK_NULL_HANDLE when unsupported */
+    uint32_t timestamp_capacity;
+    rnd_buffer buffers[TV_PVS_BINDINGS];
+    /* Visibility buffers: [0] exact (pixel centres), [1] wide (triangles
+     * dilated by half a pixel); ids and the depth attachment of each. */
+    rnd_image vis_ids[2], vis_depth[2];
+    uint32_t list_capacity;  /* triangles the FF/BF/silhouette buffers hold (per layer) */
+    uint32_t layer_capacity; /* layers the layer-stats buffer holds */
+
+    VkDescriptorSetLayout set_layout;
+    VkPipelineLayout layout;
+    VkDescriptorPool pool;
+    VkDescriptorSet set;
+    VkPipeline pipelines[PVS_PIPE_COUNT];
+
+    uint32_t* result; /* sorted ids of the last computation */
+};
+
+#define PVS_VIS_ID_FORMAT VK_FORMAT_R32_UINT
+#define PVS_VIS_DEPTH_FORMAT VK_FORMAT_D32_SFLOAT
+
+/* gpu_pipelines.c: the set layout, pipeline layout and the seven pipelines. */
+bool pvs_pipelines_create(pvs_context* ctx, char* err, size_t err_size);
+void pvs_pipelines_destroy(pvs_context* ctx);
+
+/* gpu_context.c: (re)writes every descriptor of ctx->set. */
+void pvs_write_descriptors(pvs_context* ctx);
+/* Grows the per-layer buffers to hold `triangles` layer triangles and
+ * `layers` layers (contents not preserved), rewriting the descriptors. */
+bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* err, size_t err_size);
+
+#endif

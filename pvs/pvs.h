@@ -1,0 +1,103 @@
+/* pvs.h - the trim-region PVS (paper sections 3-5): the public API.
+ *
+ * pvs_create builds everything that does not depend on the viewcell (welding
+ * and triangle adjacency, the octree, GPU buffers and pipelines); pvs_compute
+ * then runs, per request, P0 on the CPU (octree layers seen from the apex v*)
+ * and P1-P4 on the GPU (docs/trim-regions.md, "GPU passes"), and returns the
+ * sorted unique ids of every triangle potentially visible from the
+ * double-cone viewcell.
+ *
+ * Threading: a context records into its own rnd_stream and renders into its
+ * own images, so pvs_compute may run on a worker thread while other threads
+ * call rnd_draw with the same rnd_context and rnd_gpu_scene. One context must
+ * not be used by two threads at once.
+ */
+#ifndef TRIMVR_PVS_H
+#define TRIMVR_PVS_H
+
+#include "render.h"
+#include "scene.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct pvs_context pvs_context;
+
+typedef struct pvs_desc {
+    uint32_t width, height;          /* PVS resolution; 0: 512 x 512 */
+    uint32_t k;                      /* k-buffer slots per pixel and kind, 1..TV_K_FRONT; 0: 16 */
+    uint32_t octree_cap;             /* triangles per octree leaf; 0: PVS_OCTREE_DEFAULT_CAP */
+    uint32_t octree_depth;           /* 0: PVS_OCTREE_DEFAULT_DEPTH */
+    float near_m;                    /* near plane distance from v*; 0: 0.01 */
+} pvs_desc;
+
+/* A double-cone viewcell with its widened field of view. fov_pvs_deg is the
+ * full angle along the smaller image axis of the PVS resolution (the
+ * vertical one for landscape; the larger axis follows from the aspect), so
+ * the PVS frustum contains the square pyramid of half-angle
+ * α = fov_pvs_deg / 2 that predict/ sizes the viewcell for; z = Δ / tan α. */
+typedef struct pvs_viewcell {
+    float v0[3];          /* centre of the viewcell */
+    float forward[3];     /* view axis (need not be unit length) */
+    float up[3];          /* not parallel to forward */
+    float delta;          /* radius Δ of the double cone's base disk, metres, >= 0 */
+    float fov_target_deg; /* display FOV (informational: sizing is the caller's job) */
+    float fov_pvs_deg;    /* widened FOV the PVS is computed for, in (0, 180) */
+    float far_m;          /* far plane of the eyes' cameras, measured from v0 */
+} pvs_viewcell;
+
+typedef struct pvs_stats {
+    double ms[5];                 /* P0..P4: P0, P4 CPU wall clock; P1-P3 GPU timestamps summed
+                                     over layers (wall clock of the whole submission when the
+                                     queue has no timestamps, reported in ms[2]) */
+    double total_ms;              /* wall clock of pvs_compute */
+    uint32_t layers;
+    uint32_t layer_triangles;     /* triangles in all layers (frustum-culled leaves dropped) */
+    uint32_t silhouettes;         /* trim regions emitted over all layers */
+    uint64_t active_pixels;       /* active pixels resolved, summed over layers */
+    double mean_sequence;         /* mean trim-sequence length (k-buffer entries) per resolve */
+    uint64_t kbuffer_bytes;       /* k-buffers allocated */
+    uint64_t kbuffer_bytes_used;  /* most k-buffer bytes filled in one layer */
+    uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */
+    uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
+} pvs_stats;
+
+typedef struct pvs_result {
+    /* Sorted, unique triangle ids. Owned by the context: valid until the next
+     * pvs_compute or pvs_destroy on it (copy them to keep them longer). */
+    const uint32_t* ids;
+    uint32_t count;
+    pvs_stats stats;
+} pvs_result;
+
+/* Builds the viewcell-independent state for `scene` (the same scene `gpu`
+ * was uploaded from; neither is referenced for longer than the context
+ * lives, and `scene` not after the call). desc may be NULL (all defaults).
+ * Fails (NULL, one-line reason in err) on an invalid desc, when a k-buffer
+ * exceeds maxStorageBufferRange, or on a Vulkan/memory failure. */
+pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu, const pvs_desc* desc,
+                        char* err, size_t err_size);
+
+/* Waits for the context's GPU work and releases it. NULL is a no-op. */
+void pvs_destroy(pvs_context* ctx);
+
+/* Computes the PVS of `vc` into `out` (see pvs_result for ownership). Blocks
+ * until the GPU is done. Returns false with a one-line reason in err on an
+ * invalid viewcell (non-finite values, zero forward, up parallel to forward,
+ * fov outside (0, 180), far_m <= 0) or a Vulkan failure. */
+bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char* err, size_t err_size);
+
+/* The frustum pvs_compute uses, as an rnd_camera at the apex v* (aspect of
+ * the PVS resolution): for tests and visualisation. */
+rnd_camera pvs_apex_camera(const pvs_context* ctx, const pvs_viewcell* vc);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,374 @@
+#include "resolve.h"
+
+#include <assert.h>
+#include <math.h>
+
+/* Upper bounds of the per-pixel sequences (thread-local arrays on the GPU). */
+#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
+#define IV_MAX (TV_K_BACK < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK : TV_K_FRONT + TV_K_CARRY)
+#define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
+
+typedef struct seq_entry {
+    float depth;
+    uint32_t kind;
+    uint32_t id;
+    int32_t interval; /* occlusion interval a front/back belongs to, -1 none */
+    int32_t delta;    /* +1 opens a hidden range, -1 closes it */
+} seq_entry;
+
+/* Total order: depth, then kind rank, then id, so that every sort algorithm
+ * (insertion here, bitonic for long GPU lists) yields the same sequence. */
+static bool entry_less(const seq_entry* a, const seq_entry* b)
+{
+    if (a->depth != b->depth)
+        return a->depth < b->depth;
+    if (a->kind != b->kind)
+        return a->kind < b->kind;
+    return a->id < b->id;
+}
+
+static void sort_entries(seq_entry* e, uint32_t n)
+{
+    for (uint32_t i = 1; i < n; i++) {
+        seq_entry x = e[i];
+        uint32_t j = i;
+        while (j > 0 && entry_less(&x, &e[j - 1])) {
+            e[j] = e[j - 1];
+            j--;
+        }
+        e[j] = x;
+    }
+}
+
+static seq_entry make_entry(float depth, uint32_t kind, uint32_t id, int32_t delta)
+{
+    return (seq_entry){.depth = depth, .kind = kind, .id = id, .interval = -1, .delta = delta};
+}
+
+/* The counter always advances, as P2's atomic does, so that a value above
+ * the capacity tells P3 the list overflowed; the slot is usable below it. */
+static bool claim(uint32_t* counter, uint32_t capacity, uint32_t* slot)
+{
+    *slot = (*counter)++;
+    return *slot < capacity;
+}
+
+bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id)
+{
+    uint32_t s;
+    switch (kind) {
+    case TV_ENTRY_FRONT:
+        if (!claim(&kbuf->front_count, TV_K_FRONT, &s))
+            return false;
+        kbuf->front_depth[s] = depth;
+        kbuf->front_tri[s] = id;
+        return true;
+    case TV_ENTRY_BACK:
+        if (!claim(&kbuf->back_count, TV_K_BACK, &s))
+            return false;
+        kbuf->back_depth[s] = depth;
+        return true;
+    case TV_ENTRY_TRIM:
+        if (!claim(&kbuf->trim_count, TV_K_TRIM, &s))
+            return false;
+        kbuf->trim_depth[s] = depth;
+        kbuf->trim_region[s] = id;
+        return true;
+    case TV_ENTRY_UMBRA:
+        if (!claim(&kbuf->umbra_count, TV_K_UMBRA, &s))
+            return false;
+        kbuf->umbra_depth[s] = depth;
+        kbuf->umbra_region[s] = id;
+        return true;
+    default:
+        assert(!"pvs_kbuf_push: kind must be FRONT, BACK, TRIM or UMBRA");
+        return false;
+    }
+}
+
+static uint32_t min_u32(uint32_t a, uint32_t b)
+{
+    return a < b ? a : b;
+}
+
+static bool is_candidate(const seq_entry* e)
+{
+    return e->kind == TV_ENTRY_FRONT && (e->id & TV_ID_CANDIDATE) != 0;
+}
+
+/* The overflow policy: every front this pixel knows of is output and the
+ * pixel can no longer be sealed. */
+static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t* out)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < s->carry_count; i++) {
+        if (s->carry[i].kind == TV_ENTRY_FRONT)
+            out[n++] = s->carry[i].id & ~TV_ID_CANDIDATE;
+    }
+    for (uint32_t i = 0; i < min_u32(k->front_count, TV_K_FRONT); i++)
+        out[n++] = k->front_tri[i] & ~TV_ID_CANDIDATE;
+    s->stencil = TV_STENCIL_OVERFLOW;
+    s->carry_count = 0;
+    s->hide_begin = s->hide_end = 0.0f;
+    return n;
+}
+
+/* Depth of the umbra of trim region `region` at this pixel (nearest if it
+ * was rasterised more than once), from this layer or carried. */
+static bool umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth)
+{
+    float nearest = INFINITY;
+    for (uint32_t i = 0; i < min_u32(k->umbra_count, TV_K_UMBRA); i++) {
+        if (k->umbra_region[i] == region)
+            nearest = fminf(nearest, k->umbra_depth[i]);
+    }
+    for (uint32_t i = 0; i < s->carry_count; i++) {
+        if (s->carry[i].kind == TV_ENTRY_UMBRA && s->carry[i].id == region)
+            nearest = fminf(nearest, s->carry[i].depth);
+    }
+    if (nearest == INFINITY)
+        return false;
+    *depth = nearest;
+    return true;
+}
+
+static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, seq_entry* seq)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < s->carry_count; i++) {
+        if (s->carry[i].kind != TV_ENTRY_UMBRA)
+            seq[n++] = make_entry(s->carry[i].depth, s->carry[i].kind, s->carry[i].id, 0);
+    }
+    for (uint32_t i = 0; i < min_u32(k->front_count, TV_K_FRONT); i++)
+        seq[n++] = make_entry(k->front_depth[i], TV_ENTRY_FRONT, k->front_tri[i], 0);
+    for (uint32_t i = 0; i < min_u32(k->back_count, TV_K_BACK); i++)
+        seq[n++] = make_entry(k->back_depth[i], TV_ENTRY_BACK, 0, 0);
+    for (uint32_t i = 0; i < min_u32(k->trim_count, TV_K_TRIM); i++)
+        seq[n++] = make_entry(k->trim_depth[i], TV_ENTRY_TRIM, k->trim_region[i], 0);
+    sort_entries(seq, n);
+    return n;
+}
+
+typedef struct intervals {
+    uint32_t count;
+    uint32_t first[IV_MAX], back[IV_MAX]; /* sequence indices */
+    bool valid[IV_MAX];
+    bool hidden[IV_MAX]; /* set by the walk: the run starts inside an umbra */
+    float end[IV_MAX]; /* depth where the hidden range of a valid interval ends */
+    int32_t run;       /* first front of the trailing unfinished run, -1 none */
+} intervals;
+
+/* Greedy simple intervals [f, b] over the fronts and backs, each extended at
+ * the front over the consecutive fronts preceding f. */
+static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
+{
+    iv->count = 0;
+    iv->run = -1;
+    for (uint32_t i = 0; i < n; i++) {
+        if (seq[i].kind == TV_ENTRY_FRONT && !is_candidate(&seq[i]) && iv->run < 0) {
+            iv->run = (int32_t)i;
+        } else if (seq[i].kind == TV_ENTRY_BACK && iv->run >= 0) {
+            uint32_t k = iv->count++;
+            iv->first[k] = (uint32_t)iv->run;
+            iv->back[k] = i;
+            for (uint32_t j = (uint32_t)iv->run; j <= i; j++) {
+                if (seq[j].kind != TV_ENTRY_TRIM)
+                    seq[j].interval = (int32_t)k;
+            }
+            iv->run = -1;
+        }
+    }
+}
+
+/* An interval is valid when a trim fragment lies in [f, b]. Its hidden range
+ * ends at the nearest umbra of the validating regions (the most conservative
+ * choice), at b when none of them left an umbra here, never before b. */
+static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* seq, uint32_t n,
+                     intervals* iv)
+{
+    for (uint32_t v = 0; v < iv->count; v++) {
+        float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
+        iv->valid[v] = false;
+        for (uint32_t i = 0; i < n; i++) {
+            if (seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
+                continue;
+            float u = hi;
+            if (!umbra_depth(s, k, seq[i].id, &u) || u < hi)
+                u = hi;
+            iv->end[v] = iv->valid[v] && iv->end[v] < u ? iv->end[v] : u;
+            iv->valid[v] = true;
+        }
+    }
+}
+
+/* The sequence with validated backs replaced by their umbrae (END entries)
+ * plus the carried hidden range, re-sorted. */
+static uint32_t replace_backs(const pvs_pixel_state* s, const seq_entry* seq, uint32_t n,
+                              const intervals* iv, seq_entry* seq2)
+{
+    uint32_t m = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        int32_t v = seq[i].interval;
+        bool valid = v >= 0 && iv->valid[v];
+        if (valid && seq[i].kind == TV_ENTRY_BACK)
+            continue;
+        seq2[m] = seq[i];
+        seq2[m++].delta = valid && iv->first[v] == i ? 1 : 0;
+    }
+    for (uint32_t v = 0; v < iv->count; v++) {
+        if (iv->valid[v]) {
+            seq2[m] = make_entry(iv->end[v], TV_ENTRY_END, v, -1);
+            seq2[m++].interval = (int32_t)v;
+        }
+    }
+    if (s->hide_begin < s->hide_end) {
+        seq2[m++] = make_entry(s->hide_begin, TV_ENTRY_BEGIN, 0, 1);
+        seq2[m++] = make_entry(s->hide_end, TV_ENTRY_END, UINT32_MAX, -1);
+    }
+    sort_entries(seq2, m);
+    return m;
+}
+
+/* Front-to-back walk with the running prefix sum; returns true when a
+ * terminator sealed the pixel. */
+static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out, uint32_t* n_out)
+{
+    int32_t prefix = 0;
+    for (uint32_t i = 0; i < m; i++) {
+        const seq_entry* e = &seq2[i];
+        bool is_face = e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK;
+        if (e->delta > 0 && e->kind == TV_ENTRY_FRONT)
+            iv->hidden[e->interval] = prefix > 0; /* its run starts inside an umbra */
+        prefix += e->delta;
+        if (is_candidate(e)) {
+            /* It only touches the pixel: visible unless hidden, never an
+             * occluder (neither a run nor a terminator). */
+            bool in_valid = e->interval >= 0 && iv->valid[e->interval] && !iv->hidden[e->interval];
+            if (prefix == 0 || in_valid)
+                out[(*n_out)++] = e->id & ~TV_ID_CANDIDATE;
+            continue;
+        }
+        if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->valid[e->interval]) {
+            /* Every front of a validated interval's run is visible from the
+             * viewcell unless the run starts inside an earlier umbra. */
+            if (!iv->hidden[e->interval])
+                out[(*n_out)++] = e->id;
+            continue;
+        }
+        if (!is_face || prefix > 0)
+            continue; /* trims, range markers, and faces hidden by an umbra */
+        if (e->kind == TV_ENTRY_FRONT && e->interval < 0)
+            return false; /* the unfinished trailing run: carried, not a terminator */
+        if (e->kind == TV_ENTRY_FRONT)
+            out[(*n_out)++] = e->id;
+        return true;
+    }
+    return false;
+}
+
+/* The carried hidden range: the union of the ranges (this layer's validated
+ * intervals and the range carried in) that contain the depth where the
+ * carried part of the sequence starts. They all contain that depth, so their
+ * union is one range. Ranges ending before it are dropped (conservative: the
+ * next layer then hides less). */
+static void carry_range(pvs_pixel_state* s, const seq_entry* seq, uint32_t n, const intervals* iv)
+{
+    float tail = -INFINITY;
+    if (iv->run >= 0) {
+        tail = seq[iv->run].depth;
+    } else {
+        for (uint32_t i = 0; i < n; i++) {
+            if (seq[i].kind == TV_ENTRY_FRONT || seq[i].kind == TV_ENTRY_BACK)
+                tail = seq[i].depth;
+        }
+        if (tail == -INFINITY)
+            return; /* nothing but trims this layer: keep the range as it is */
+    }
+    float lo = INFINITY, hi = -INFINITY;
+    if (s->hide_begin < s->hide_end && s->hide_begin <= tail && tail < s->hide_end) {
+        lo = s->hide_begin;
+        hi = s->hide_end;
+    }
+    for (uint32_t v = 0; v < iv->count; v++) {
+        float b = seq[iv->first[v]].depth;
+        if (iv->valid[v] && b <= tail && tail < iv->end[v]) {
+            lo = b < lo ? b : lo;
+            hi = iv->end[v] > hi ? iv->end[v] : hi;
+        }
+    }
+    s->hide_begin = lo < hi ? lo : 0.0f;
+    s->hide_end = lo < hi ? hi : 0.0f;
+}
+
+/* Carries the trailing unfinished run: its fronts, the trims behind its
+ * first front (they may validate it once its back arrives) and those trims'
+ * umbrae. Returns false when that does not fit in TV_K_CARRY. */
+static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* seq, uint32_t n,
+                      const intervals* iv)
+{
+    pvs_entry next[TV_K_CARRY];
+    uint32_t c = 0;
+    for (uint32_t i = iv->run < 0 ? n : (uint32_t)iv->run; i < n; i++) {
+        if (c == TV_K_CARRY)
+            return false;
+        next[c++] = (pvs_entry){seq[i].depth, seq[i].kind, seq[i].id};
+    }
+    uint32_t run_entries = c;
+    for (uint32_t i = 0; i < run_entries; i++) {
+        float u;
+        if (next[i].kind != TV_ENTRY_TRIM || !umbra_depth(s, k, next[i].id, &u))
+            continue;
+        if (c == TV_K_CARRY)
+            return false;
+        next[c++] = (pvs_entry){u, TV_ENTRY_UMBRA, next[i].id};
+    }
+    for (uint32_t i = 0; i < c; i++)
+        s->carry[i] = next[i];
+    s->carry_count = c;
+    return true;
+}
+
+uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out,
+                           bool* overflowed)
+{
+    assert(state && kbuf && out && overflowed);
+    *overflowed = false;
+    if (state->stencil == TV_STENCIL_SEALED)
+        return 0;
+    if (state->stencil == TV_STENCIL_UNTRIMMED && kbuf->trim_count == 0)
+        return 0;
+    if (state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT ||
+        kbuf->back_count > TV_K_BACK || kbuf->trim_count > TV_K_TRIM ||
+        kbuf->umbra_count > TV_K_UMBRA) {
+        *overflowed = true;
+        return resolve_overflow(state, kbuf, out);
+    }
+    state->stencil = TV_STENCIL_TRIMMED;
+
+    seq_entry seq[SEQ_MAX], seq2[SEQ2_MAX];
+    intervals iv;
+    uint32_t n = gather(state, kbuf, seq);
+    form_intervals(seq, n, &iv);
+    validate(state, kbuf, seq, n, &iv);
+    uint32_t m = replace_backs(state, seq, n, &iv, seq2);
+    uint32_t n_out = 0;
+    if (walk(seq2, m, &iv, out, &n_out)) {
+        state->stencil = TV_STENCIL_SEALED;
+        state->carry_count = 0;
+        state->hide_begin = state->hide_end = 0.0f;
+        return n_out;
+    }
+    carry_range(state, seq, n, &iv);
+    if (!carry_run(state, kbuf, seq, n, &iv)) {
+        /* The run's fronts have not been output yet: the policy outputs them. */
+        *overflowed = true;
+        for (uint32_t i = (uint32_t)iv.run; i < n; i++) {
+            if (seq[i].kind == TV_ENTRY_FRONT)
+                out[n_out++] = seq[i].id & ~TV_ID_CANDIDATE;
+        }
+        state->stencil = TV_STENCIL_OVERFLOW;
+        state->carry_count = 0;
+        state->hide_begin = state->hide_end = 0.0f;
+    }
+    return n_out;
+}

@@ -1,0 +1,104 @@
+/* resolve.h - trim-sequence resolve of one pixel for one layer (P3), the C
+ * reference the P3 compute shader mirrors line by line (paper section 4.3).
+ *
+ * Data layout (per pixel, as on the GPU): four k-buffers with fixed
+ * capacities from shaders/config.h, each with an atomic counter that P2
+ * increments for every fragment, also past the capacity: a counter above its
+ * K is how P3 knows the list overflowed. Trim and umbra fragments carry the
+ * id of the silhouette edge that produced them (the trim-region id, unique
+ * within one PVS computation: P1 numbers the silhouettes of all layers
+ * consecutively), which is the 1:1 trim region <-> umbra correspondence.
+ *
+ * The pixel state persists across layers: the trim stencil, the unfinished
+ * interval carried to the next layer (fronts, with the trims and umbrae that
+ * may still validate it), and one hidden range [hide_begin, hide_end] (the
+ * umbrae still open at the end of the layer).
+ *
+ * Rules (docs/trim-regions.md has examples): sort by (depth, kind, id);
+ * greedy intervals [f, b] over fronts and backs, extended at the front over
+ * consecutive fronts; an interval is validated by a trim fragment t with
+ * f <= t <= b; its back is replaced by the nearest umbra of the validating
+ * regions (never nearer than b); +1 at validated fronts, -1 at those umbrae,
+ * prefix sum > 0 hides an entry. Walking front to back, the fronts of every
+ * validated interval are output unless its first front is hidden; the first
+ * visible front or back outside a validated interval is the terminator (a
+ * front terminator is output) and seals the pixel; a trailing run of fronts
+ * without a back is carried, not a terminator.
+ *
+ * Candidate fronts (front id | TV_ID_CANDIDATE: the triangle touches the
+ * pixel without covering its centre) take no part in intervals and never
+ * terminate: one is output when the walk reaches it outside every hidden
+ * range, or inside a validated interval whose fronts are output. Output ids
+ * never carry the flag.
+ *
+ * Overflow policy (never lose a front): P2 adds a front fragment that finds
+ * its k-buffer full directly to the PVS (pvs_kbuf_push tells the caller). If
+ * any k-buffer of the pixel overflowed, or the carry does not fit, the pixel
+ * becomes TV_STENCIL_OVERFLOW: all its stored and carried fronts are output,
+ * and in every later layer all fronts are output and the pixel is never
+ * sealed. See docs/trim-regions.md for the rules and examples.
+ */
+#ifndef TRIMVR_PVS_RESOLVE_H
+#define TRIMVR_PVS_RESOLVE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "config.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Most triangle ids one pvs_resolve_pixel call can output. */
+#define PVS_RESOLVE_MAX_OUTPUT (TV_K_FRONT + TV_K_CARRY)
+
+/* The four k-buffers of one pixel for the current layer. */
+typedef struct pvs_kbuf {
+    uint32_t front_count, back_count, trim_count, umbra_count; /* may exceed K */
+    float front_depth[TV_K_FRONT];
+    uint32_t front_tri[TV_K_FRONT];
+    float back_depth[TV_K_BACK];
+    float trim_depth[TV_K_TRIM];
+    uint32_t trim_region[TV_K_TRIM];
+    float umbra_depth[TV_K_UMBRA];
+    uint32_t umbra_region[TV_K_UMBRA];
+} pvs_kbuf;
+
+/* One trim-sequence entry. id: triangle id for fronts, trim-region id for
+ * trims and umbrae. */
+typedef struct pvs_entry {
+    float depth;
+    uint32_t kind; /* TV_ENTRY_* */
+    uint32_t id;
+} pvs_entry;
+
+typedef struct pvs_pixel_state {
+    uint32_t stencil; /* TV_STENCIL_*; zero-initialised = untrimmed */
+    uint32_t carry_count;
+    pvs_entry carry[TV_K_CARRY]; /* kinds FRONT, TRIM, UMBRA, in depth order */
+    float hide_begin, hide_end;  /* a carried hidden range when hide_begin < hide_end */
+} pvs_pixel_state;
+
+/* P2's insertion of one fragment of `kind` (TV_ENTRY_FRONT, BACK, TRIM or
+ * UMBRA) into the pixel's k-buffer: increments the counter, stores the entry
+ * when there is room. Returns false when the list was full; for a front the
+ * caller must then add `id` to the PVS itself. Asserts a valid kind. */
+bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id);
+
+/* Resolves one active pixel after P2 rasterised a layer (depth: any value
+ * monotonic in the distance along the pixel's ray from v*). Writes the
+ * triangle ids this pixel adds to the trimmed-primitive list into `out`
+ * (room for PVS_RESOLVE_MAX_OUTPUT) and returns their count; updates
+ * `state`. A sealed pixel outputs nothing; an untrimmed pixel without trim
+ * fragments outputs nothing either (its nearest front is the visibility
+ * buffer's), otherwise the pixel becomes trimmed and is resolved. Sets
+ * *overflowed when this call handled the pixel by the overflow policy. */
+uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out,
+                           bool* overflowed);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,47 @@
+#include "silhouette.h"
+
+#include <assert.h>
+#include <stdbool.h>
+
+#include "weld.h"
+
+static bool front_facing(const float* positions, const uint32_t* indices, uint32_t tri,
+                         const float point[3])
+{
+    const float* a = positions + 3u * indices[3u * tri];
+    const float* b = positions + 3u * indices[3u * tri + 1];
+    const float* c = positions + 3u * indices[3u * tri + 2];
+    double u[3], v[3], w[3];
+    for (int i = 0; i < 3; i++) {
+        u[i] = (double)b[i] - a[i];
+        v[i] = (double)c[i] - a[i];
+        w[i] = (double)point[i] - a[i];
+    }
+    double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    return n[0] * w[0] + n[1] * w[1] + n[2] * w[2] > 0.0;
+}
+
+size_t pvs_silhouettes_bound(size_t triangle_count)
+{
+    return 3 * triangle_count;
+}
+
+size_t pvs_find_silhouettes(pvs_silhouette* out, const float* positions, const uint32_t* indices,
+                            const uint32_t* adjacency, const uint32_t* tri_ids, size_t count,
+                            const float point[3])
+{
+    assert(positions && indices && adjacency && point && (out || count == 0));
+    size_t n = 0;
+    for (size_t i = 0; i < count; i++) {
+        uint32_t t = tri_ids ? tri_ids[i] : (uint32_t)i;
+        bool front = front_facing(positions, indices, t, point);
+        for (uint32_t e = 0; e < 3; e++) {
+            uint32_t other = adjacency[3u * t + e];
+            bool silhouette = other == SCN_EDGE_BORDER || other == SCN_EDGE_NONMANIFOLD ||
+                              (front && !front_facing(positions, indices, other, point));
+            if (silhouette)
+                out[n++] = (pvs_silhouette){t, e};
+        }
+    }
+    return n;
+}
