@@ -1,0 +1,141 @@
+#define _POSIX_C_SOURCE 200809L
+#include "app_scene.h"
+
+#include "clock.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static bool dir_exists(const char* path)
+{
+    return access(path, R_OK | X_OK) == 0;
+}
+
+/* `rel` relative to the executable's folder (build/trimvr -> build/rel)
+ * into buf; false when it does not fit or /proc/self/exe is unreadable. */
+static bool beside_exe(const char* rel, char* buf, size_t size)
+{
+    char exe[4096];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n <= 0)
+        return false;
+    exe[n] = '\0';
+    char* slash = strrchr(exe, '/');
+    if (!slash)
+        return false;
+    *slash = '\0';
+    int len = snprintf(buf, size, "%s/%s", exe, rel);
+    return len > 0 && (size_t)len < size;
+}
+
+static bool shared_dir(char* out, size_t out_size)
+{
+    const char* env = getenv("TRIMVR_SHARED");
+    if (env && *env) {
+        snprintf(out, out_size, "%s", env);
+        return true;
+    }
+    if (dir_exists("../shared/scenes")) {
+        snprintf(out, out_size, "../shared");
+        return true;
+    }
+    char scenes[4096];
+    if (beside_exe("../../shared/scenes", scenes, sizeof scenes) && dir_exists(scenes) &&
+        beside_exe("../../shared", out, out_size))
+        return true;
+    snprintf(out, out_size, "../shared");
+    return false;
+}
+
+const char* tv_bundled_file(const char* rel, char* buf, size_t size)
+{
+    if (access(rel, R_OK) == 0)
+        return rel;
+    char up[4096];
+    int len = snprintf(up, sizeof up, "../%s", rel);
+    if (len > 0 && (size_t)len < sizeof up && beside_exe(up, buf, size) && access(buf, R_OK) == 0)
+        return buf;
+    return rel;
+}
+
+bool tv_resolve_scene_spec(const char* spec, char* out, size_t out_size)
+{
+    char shared[4096];
+    int n;
+    if (strcmp(spec, "sponza") == 0) {
+        shared_dir(shared, sizeof shared);
+        n = snprintf(out, out_size, "%s/scenes/sponza_lod4/sponza_s_lod4.glb", shared);
+    } else if (strncmp(spec, "oa:", 3) == 0 && spec[3] != '\0' && !strchr(spec + 3, '/')) {
+        shared_dir(shared, sizeof shared);
+        n = snprintf(out, out_size, "%s/scenes/openarena/%s/%s.gltf", shared, spec + 3, spec + 3);
+    } else {
+        n = snprintf(out, out_size, "%s", spec);
+    }
+    return n >= 0 && (size_t)n < out_size;
+}
+
+bool tv_app_scene_open(const char* command, const char* spec, tv_app_scene* out)
+{
+    return tv_app_scene_open_desc(command, spec, NULL, out);
+}
+
+bool tv_app_scene_open_desc(const char* command, const char* spec, const rnd_desc* rd, tv_app_scene* out)
+{
+    memset(out, 0, sizeof *out);
+    char resolved[4096], err[512];
+    if (!tv_resolve_scene_spec(spec, resolved, sizeof resolved)) {
+        fprintf(stderr, "trimvr %s: error: scene name too long: %s\n", command, spec);
+        return false;
+    }
+    double t0 = tv_now_ms();
+    if (!scn_load(resolved, &out->scene, err, sizeof err)) {
+        fprintf(stderr, "trimvr %s: error: %s\n", command, err);
+        return false;
+    }
+    double t1 = tv_now_ms();
+    out->load_ms = t1 - t0;
+    out->ctx = rnd_create(rd, err, sizeof err);
+    if (!out->ctx) {
+        fprintf(stderr, "trimvr %s: error: %s\n", command, err);
+        scn_scene_free(&out->scene);
+        return false;
+    }
+    out->gpu = rnd_scene_create(out->ctx, &out->scene, err, sizeof err);
+    if (!out->gpu) {
+        fprintf(stderr, "trimvr %s: error: %s: %s\n", command, resolved, err);
+        rnd_destroy(out->ctx);
+        scn_scene_free(&out->scene);
+        memset(out, 0, sizeof *out);
+        return false;
+    }
+    out->upload_ms = tv_now_ms() - t1;
+    return true;
+}
+
+bool tv_app_scene_close(const char* command, tv_app_scene* s)
+{
+    if (s->gpu)
+        rnd_scene_destroy(s->ctx, s->gpu);
+    uint32_t messages = s->ctx ? rnd_validation_message_count(s->ctx) : 0;
+    rnd_destroy(s->ctx);
+    scn_scene_free(&s->scene);
+    memset(s, 0, sizeof *s);
+    if (messages) {
+        fprintf(stderr, "trimvr %s: error: the Vulkan validation layer reported %u warning(s) or error(s)\n",
+                command, messages);
+        return false;
+    }
+    return true;
+}
+
+rnd_camera tv_camera_at_pose(const pred_pose* pose, float fov_y_deg, float near_m, float far_m)
+{
+    rnd_camera cam = {.fov_y_deg = fov_y_deg, .near_m = near_m, .far_m = far_m};
+    for (int k = 0; k < 3; k++)
+        cam.position[k] = (float)pose->p[k];
+    for (int k = 0; k < 4; k++)
+        cam.orientation[k] = (float)pose->q[k];
+    return cam;
+}

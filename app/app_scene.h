@@ -1,0 +1,51 @@
+/* app_scene.h - what every rendering subcommand sets up first: the scene
+ * (with the named-scene aliases of ../shared), the Vulkan context and the
+ * uploaded scene, and checks at the end that validation stayed silent. */
+#ifndef TRIMVR_APP_SCENE_H
+#define TRIMVR_APP_SCENE_H
+
+#include "pose.h"
+#include "render.h"
+#include "scene.h"
+
+#include <stdbool.h>
+#include <stddef.h>
+
+typedef struct tv_app_scene {
+    scn_scene scene;
+    rnd_context* ctx;
+    rnd_gpu_scene* gpu;
+    double load_ms;   /* scn_load wall time */
+    double upload_ms; /* rnd_scene_create wall time */
+} tv_app_scene;
+
+/* Expands the short names of the third-party scenes: "sponza" and
+ * "oa:<level>" (OpenArena) become files under the shared scenes folder, found
+ * through $TRIMVR_SHARED, else ./../shared, else <exe dir>/../../shared.
+ * Anything else is copied unchanged. Returns false if the result does not fit. */
+bool tv_resolve_scene_spec(const char* spec, char* out, size_t out_size);
+
+/* Finds the bundled file `rel` (such as "paths/city-walk.csv") from the
+ * repository root (the README's commands run there) or next to the
+ * executable (build/trimvr -> ../rel). Returns rel itself when neither has
+ * it, so the caller's open fails with a one-line error naming it. */
+const char* tv_bundled_file(const char* rel, char* buf, size_t size);
+
+/* Loads spec (after alias expansion), creates the Vulkan context and uploads
+ * the scene. Prints a one-line error and returns false on failure, leaving
+ * nothing allocated. */
+bool tv_app_scene_open(const char* command, const char* spec, tv_app_scene* out);
+
+/* The same with context options (a window's instance extensions, swapchain);
+ * rd may be NULL. */
+bool tv_app_scene_open_desc(const char* command, const char* spec, const rnd_desc* rd, tv_app_scene* out);
+
+/* The camera of an eye or head pose (float copies of position and
+ * orientation) with the given vertical FOV and clip planes. */
+rnd_camera tv_camera_at_pose(const pred_pose* pose, float fov_y_deg, float near_m, float far_m);
+
+/* Releases everything. Returns false (after printing why) when the validation
+ * layer reported warnings or errors during the run. */
+bool tv_app_scene_close(const char* command, tv_app_scene* s);
+
+#endif

@@ -1,0 +1,137 @@
+#define _POSIX_C_SOURCE 200809L
+#include "args.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static bool parse_float(const char* s, float* out)
+{
+    char* end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end != '\0' || errno != 0 || !isfinite(v))
+        return false;
+    *out = (float)v;
+    return true;
+}
+
+static bool parse_value(const tv_arg* a, const char* value)
+{
+    switch (a->kind) {
+    case TV_ARG_STRING:
+        *(const char**)a->out = value;
+        return true;
+    case TV_ARG_INT: {
+        char* end;
+        errno = 0;
+        long v = strtol(value, &end, 10);
+        if (end == value || *end != '\0' || errno != 0 || v < -2147483647L || v > 2147483647L)
+            return false;
+        *(int*)a->out = (int)v;
+        return true;
+    }
+    case TV_ARG_FLOAT:
+        return parse_float(value, (float*)a->out);
+    case TV_ARG_RES: {
+        unsigned w, h;
+        char tail;
+        if (sscanf(value, "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384)
+            return false;
+        ((unsigned*)a->out)[0] = w;
+        ((unsigned*)a->out)[1] = h;
+        return true;
+    }
+    case TV_ARG_VEC3: {
+        char buf[128];
+        if (strlen(value) >= sizeof buf)
+            return false;
+        strcpy(buf, value);
+        float* v = (float*)a->out;
+        char* save = NULL;
+        char* tok = strtok_r(buf, ",", &save);
+        for (int i = 0; i < 3; i++) {
+            if (!tok || !parse_float(tok, &v[i]))
+                return false;
+            tok = strtok_r(NULL, ",", &save);
+        }
+        return tok == NULL;
+    }
+    case TV_ARG_FLAG:
+        break;
+    }
+    return false;
+}
+
+static const char* kind_expectation(tv_arg_kind kind)
+{
+    switch (kind) {
+    case TV_ARG_INT: return "an integer";
+    case TV_ARG_FLOAT: return "a finite number";
+    case TV_ARG_RES: return "WIDTHxHEIGHT, e.g. 640x360";
+    case TV_ARG_VEC3: return "three numbers X,Y,Z";
+    default: return "a value";
+    }
+}
+
+tv_args_result tv_args_parse(const char* command, const char* summary, const tv_arg* args,
+                             int arg_count, int argc, char** argv)
+{
+    for (int i = 0; i < argc; i++) {
+        const char* tok = argv[i];
+        if (strcmp(tok, "--help") == 0 || strcmp(tok, "-h") == 0) {
+            tv_args_usage(command, summary, args, arg_count);
+            return TV_ARGS_HELP;
+        }
+        if (strncmp(tok, "--", 2) != 0) {
+            fprintf(stderr, "trimvr %s: error: unexpected argument '%s' (see trimvr %s --help)\n",
+                    command, tok, command);
+            return TV_ARGS_ERROR;
+        }
+        const char* name = tok + 2;
+        const char* eq = strchr(name, '=');
+        size_t name_len = eq ? (size_t)(eq - name) : strlen(name);
+        const tv_arg* a = NULL;
+        for (int k = 0; k < arg_count; k++)
+            if (strlen(args[k].name) == name_len && strncmp(args[k].name, name, name_len) == 0)
+                a = &args[k];
+        if (!a) {
+            fprintf(stderr, "trimvr %s: error: unknown option '--%.*s' (see trimvr %s --help)\n",
+                    command, (int)name_len, name, command);
+            return TV_ARGS_ERROR;
+        }
+        if (a->kind == TV_ARG_FLAG) {
+            if (eq) {
+                fprintf(stderr, "trimvr %s: error: --%s takes no value\n", command, a->name);
+                return TV_ARGS_ERROR;
+            }
+            *(bool*)a->out = true;
+            continue;
+        }
+        const char* value = eq ? eq + 1 : (i + 1 < argc ? argv[++i] : NULL);
+        if (!value) {
+            fprintf(stderr, "trimvr %s: error: --%s needs %s\n", command, a->name, kind_expectation(a->kind));
+            return TV_ARGS_ERROR;
+        }
+        if (!parse_value(a, value)) {
+            fprintf(stderr, "trimvr %s: error: --%s: expected %s, got '%s'\n", command, a->name,
+                    kind_expectation(a->kind), value);
+            return TV_ARGS_ERROR;
+        }
+    }
+    return TV_ARGS_OK;
+}
+
+void tv_args_usage(const char* command, const char* summary, const tv_arg* args, int arg_count)
+{
+    printf("usage: trimvr %s [options]\n\n%s\n\noptions:\n", command, summary);
+    for (int k = 0; k < arg_count; k++) {
+        char left[64];
+        snprintf(left, sizeof left, "--%s%s%s", args[k].name, args[k].metavar ? " " : "",
+                 args[k].metavar ? args[k].metavar : "");
+        printf("  %-24s %s\n", left, args[k].help);
+    }
+    printf("  %-24s %s\n", "--help", "show this help");
+}

@@ -1,0 +1,101 @@
+/* trimvr pvs: compute one PVS for a viewcell given on the command line and
+ * print its size and the method's statistics (per-phase timings, layers,
+ * k-buffer use for tr). */
+#include "app_scene.h"
+#include "args.h"
+#include "cli_viewcell.h"
+#include "commands.h"
+#include "method.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+static void print_tr_stats(const pvs_stats* s)
+{
+    printf("phases (ms)       P0 %.2f  P1 %.2f  P2 %.2f  P3 %.2f  P4 %.2f  (total %.2f)\n", s->ms[0], s->ms[1],
+           s->ms[2], s->ms[3], s->ms[4], s->total_ms);
+    printf("layers            %u (%u triangles in layers, %u trim regions)\n", s->layers, s->layer_triangles,
+           s->silhouettes);
+    printf("active pixels     %llu (summed over layers), mean trim sequence %.2f\n",
+           (unsigned long long)s->active_pixels, s->mean_sequence);
+    printf("k-buffers         %.1f MiB allocated, %.1f MiB used (largest layer)\n", s->kbuffer_bytes / 1048576.0,
+           s->kbuffer_bytes_used / 1048576.0);
+    printf("overflow          %llu pixels, %llu front fragments (handled conservatively)\n",
+           (unsigned long long)s->overflow_pixels, (unsigned long long)s->overflow_fronts);
+}
+
+int tv_cmd_pvs(int argc, char** argv)
+{
+    const char *scene = NULL, *method = "tr", *ids_out = NULL;
+    float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
+    unsigned res[2] = {0, 0};
+    int k = 0;
+    const tv_arg args[] = {
+        {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
+        {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
+        {"dir", TV_ARG_VEC3, dir, "X,Y,Z", "view direction (default 0,0,-1)"},
+        {"delta", TV_ARG_FLOAT, &delta, "M", "viewcell radius (default 0.1)"},
+        {"fov", TV_ARG_FLOAT, &fov, "DEG", "display FOV (default 60)"},
+        {"fov-pvs", TV_ARG_FLOAT, &fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
+        {"res", TV_ARG_RES, res, "WxH", "PVS resolution (default 512x512)"},
+        {"k", TV_ARG_INT, &k, "N", "tr: k-buffer slots per pixel and kind (default 16)"},
+        {"method", TV_ARG_STRING, &method, "M", "tr, gt, sas, frompoint or q3vis (default tr)"},
+        {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
+    };
+    tv_args_result r = tv_args_parse("pvs", "Computes the PVS of one viewcell and prints a summary.", args,
+                                     (int)(sizeof args / sizeof args[0]), argc, argv);
+    if (r != TV_ARGS_OK)
+        return r == TV_ARGS_HELP ? 0 : 2;
+    /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
+    pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k},
+                          .width = res[0], .height = res[1]};
+    pred_viewcell vc;
+    if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc) ||
+        k < 0) {
+        fprintf(stderr, "trimvr pvs: error: need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "
+                        "FOVs in (0, 180) (see trimvr pvs --help)\n");
+        return 2;
+    }
+    tv_app_scene s;
+    if (!tv_app_scene_open("pvs", scene, &s))
+        return 1;
+    char err[512];
+    int status = 0;
+    pvs_method* m = pvs_method_create(&md, s.ctx, &s.scene, s.gpu, err, sizeof err);
+    pvs_request req = {.vc = vc, .eye_fov_h_deg = fov};
+    for (int i = 0; i < 3; i++)
+        req.current.p[i] = pos[i];
+    req.current.q[3] = 1.0;
+    uint32_t* ids = NULL;
+    uint32_t count = 0;
+    pvs_method_stats st = {0};
+    if (!m || !pvs_method_compute(m, &req, &ids, &count, &st, err, sizeof err)) {
+        fprintf(stderr, "trimvr pvs: error: %s\n", err);
+        status = 1;
+    } else {
+        printf("scene             %s (%u triangles) on %s\n", scene, s.scene.triangle_count, rnd_device_name(s.ctx));
+        printf("viewcell          v0 (%.3f, %.3f, %.3f), delta %.3f m, FOV %.1f / PVS %.1f deg, apex %.3f m behind\n",
+               vc.v0[0], vc.v0[1], vc.v0[2], vc.delta, vc.fov_target_deg, vc.fov_pvs_deg, vc.z);
+        printf("PVS (%s)          %u triangles, %.2f %% of the scene, %.1f ms\n", method, count,
+               s.scene.triangle_count ? 100.0 * count / s.scene.triangle_count : 0.0, st.total_ms);
+        if (md.kind == PVS_METHOD_TR)
+            print_tr_stats(&st.tr);
+        else
+            printf("views rendered    %u\n", st.views);
+        if (ids_out) {
+            FILE* f = fopen(ids_out, "w");
+            for (uint32_t i = 0; f && i < count; i++)
+                fprintf(f, "%u\n", ids[i]);
+            if (!f || fclose(f) != 0) {
+                fprintf(stderr, "trimvr pvs: error: %s: cannot write\n", ids_out);
+                status = 1;
+            }
+        }
+    }
+    free(ids);
+    pvs_method_destroy(m);
+    if (!tv_app_scene_close("pvs", &s))
+        status = 1;
+    return status;
+}

@@ -1,0 +1,150 @@
+#include "eval_images.h"
+
+#include "image_io.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+bool tv_eval_images_keep_worst(tv_eval_images* w, const pred_viewcell* vc, const pvs_eval_result* m,
+                               const uint8_t* pvs_mask, const uint8_t* gt_mask, uint32_t triangle_count)
+{
+    if (w->have && (m->fng_pixels_max < w->m.fng_pixels_max ||
+                    (m->fng_pixels_max == w->m.fng_pixels_max && !(m->psnr_min_db < w->m.psnr_min_db))))
+        return true;
+    if (!w->pvs) {
+        w->pvs = malloc(triangle_count ? triangle_count : 1);
+        w->gt = malloc(triangle_count ? triangle_count : 1);
+        if (!w->pvs || !w->gt)
+            return false;
+    }
+    memcpy(w->pvs, pvs_mask, triangle_count);
+    memcpy(w->gt, gt_mask, triangle_count);
+    w->vc = *vc;
+    w->m = *m;
+    w->triangle_count = triangle_count;
+    w->have = true;
+    return true;
+}
+
+void tv_eval_images_free(tv_eval_images* w)
+{
+    free(w->pvs);
+    free(w->gt);
+    memset(w, 0, sizeof *w);
+}
+
+typedef enum colouring { COLOUR_FIGURE1, COLOUR_FALSE_NEGATIVES } colouring;
+
+/* Recolours a full render by triangle class. */
+static void classify(const tv_eval_images* w, colouring mode, const uint8_t* rgba, const uint32_t* ids,
+                     size_t pixels, uint8_t* rgb)
+{
+    for (size_t i = 0; i < pixels; i++) {
+        const uint8_t* c = &rgba[4 * i];
+        uint8_t* o = &rgb[3 * i];
+        uint32_t id = ids[i];
+        int lum = (c[0] * 3 + c[1] * 6 + c[2]) / 10;
+        if (id >= w->triangle_count) { /* background */
+            o[0] = o[1] = o[2] = 16;
+        } else if (mode == COLOUR_FALSE_NEGATIVES) {
+            bool fn = !w->pvs[id];
+            o[0] = fn ? 255 : c[0], o[1] = fn ? 0 : c[1], o[2] = fn ? 0 : c[2];
+        } else if (w->gt[id]) { /* truly visible: shaded as rendered */
+            o[0] = c[0], o[1] = c[1], o[2] = c[2];
+        } else if (w->pvs[id]) { /* false positive: blue */
+            o[0] = (uint8_t)(lum / 4), o[1] = (uint8_t)(lum / 3 + 40), o[2] = (uint8_t)(lum / 2 + 127);
+        } else { /* culled and not visible: grey */
+            o[0] = o[1] = o[2] = (uint8_t)(lum / 4 + 40);
+        }
+    }
+}
+
+static bool render_classified(const tv_eval_images* w, rnd_context* ctx, rnd_target* target,
+                              const rnd_gpu_scene* gpu, const rnd_camera* cam, colouring mode, const char* file,
+                              uint8_t* rgba, uint32_t* ids, uint8_t* rgb, char* err, size_t err_size)
+{
+    uint32_t width = rnd_target_width(target), height = rnd_target_height(target);
+    if (!rnd_draw(ctx, target, gpu, cam, NULL, 0, NULL) || !rnd_target_read_color(ctx, target, rgba) ||
+        !rnd_target_read_ids(ctx, target, ids)) {
+        snprintf(err, err_size, "%s: rendering failed (Vulkan error logged)", file);
+        return false;
+    }
+    classify(w, mode, rgba, ids, (size_t)width * height, rgb);
+    return scn_image_write_png(file, rgb, width, height, 3, err, err_size);
+}
+
+static void look_camera(const double pos[3], const double forward[3], const double up[3], float fov_y,
+                        rnd_camera* cam)
+{
+    double q[4];
+    pred_quat_look(forward, up, q);
+    for (int i = 0; i < 3; i++)
+        cam->position[i] = (float)pos[i];
+    for (int i = 0; i < 4; i++)
+        cam->orientation[i] = (float)q[i];
+    cam->fov_y_deg = fov_y;
+    cam->near_m = 0.05f;
+    cam->far_m = 2000.0f;
+}
+
+bool tv_eval_images_write(const tv_eval_images* w, rnd_context* ctx, const rnd_gpu_scene* gpu,
+                          const scn_scene* scene, const pvs_eval_desc* desc, const char* out_dir, char* err,
+                          size_t err_size)
+{
+    if (!w->have)
+        return true;
+    uint32_t width = desc->width ? desc->width : 640, height = desc->height ? desc->height : 360;
+    uint32_t samples = desc->samples ? desc->samples : 200;
+    size_t pixels = (size_t)width * height;
+    uint8_t* rgba = malloc(pixels * 4);
+    uint8_t* rgb = malloc(pixels * 3);
+    uint32_t* ids = malloc(pixels * sizeof *ids);
+    rnd_camera* cams = malloc(samples * sizeof *cams);
+    rnd_target* target = rgba && rgb && ids && cams ? rnd_target_create(ctx, width, height, err, err_size) : NULL;
+    bool ok = target != NULL;
+    if (!ok && !err[0])
+        snprintf(err, err_size, "out of memory");
+    const pred_viewcell* vc = &w->vc;
+    double f[3] = {vc->forward[0], vc->forward[1], vc->forward[2]}, u[3] = {vc->up[0], vc->up[1], vc->up[2]};
+    float aspect = (float)width / (float)height;
+    char file[4200];
+    if (ok) { /* Figure 1 from the viewcell centre, with the PVS FOV: what the PVS was computed for */
+        double p[3] = {vc->v0[0], vc->v0[1], vc->v0[2]};
+        rnd_camera cam;
+        look_camera(p, f, u, rnd_fov_y_from_x(fminf(vc->fov_pvs_deg, 170.0f), aspect), &cam);
+        snprintf(file, sizeof file, "%s/fig1_eye.png", out_dir);
+        ok = render_classified(w, ctx, target, gpu, &cam, COLOUR_FIGURE1, file, rgba, ids, rgb, err, err_size);
+    }
+    if (ok) { /* overview: behind and above the viewcell, looking down at the region in front of it */
+        float extent = fmaxf(fmaxf(scene->bounds_max[0] - scene->bounds_min[0],
+                                   scene->bounds_max[1] - scene->bounds_min[1]),
+                             scene->bounds_max[2] - scene->bounds_min[2]);
+        double back = fmin(fmax(0.08 * extent, 3.0), 25.0);
+        double p[3], target_pt[3], dir[3];
+        for (int i = 0; i < 3; i++) {
+            p[i] = vc->v0[i] - back * f[i] + 0.8 * back * u[i];
+            target_pt[i] = vc->v0[i] + 1.5 * back * f[i];
+            dir[i] = target_pt[i] - p[i];
+        }
+        rnd_camera cam;
+        look_camera(p, dir, u, 60.0f, &cam);
+        snprintf(file, sizeof file, "%s/fig1_overview.png", out_dir);
+        ok = render_classified(w, ctx, target, gpu, &cam, COLOUR_FIGURE1, file, rgba, ids, rgb, err, err_size);
+    }
+    if (ok) { /* the evaluation's worst sample view, false negatives red */
+        uint32_t n = pvs_gt_cameras(vc, desc, cams, samples);
+        uint32_t view = w->m.worst_view < n ? w->m.worst_view : 0;
+        snprintf(file, sizeof file, "%s/fn_worst.png", out_dir);
+        ok = n > 0 && render_classified(w, ctx, target, gpu, &cams[view], COLOUR_FALSE_NEGATIVES, file, rgba, ids,
+                                        rgb, err, err_size);
+    }
+    if (target)
+        rnd_target_destroy(ctx, target);
+    free(rgba);
+    free(rgb);
+    free(ids);
+    free(cams);
+    return ok;
+}

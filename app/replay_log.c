@@ -1,0 +1,215 @@
+#include "replay_log.h"
+
+#include "stats.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* growable array of doubles for the percentiles */
+typedef struct series {
+    double* v;
+    size_t n, cap;
+} series;
+
+static bool series_push(series* s, double x)
+{
+    if (s->n == s->cap) {
+        size_t cap = s->cap ? s->cap * 2 : 256;
+        double* v = realloc(s->v, cap * sizeof *v);
+        if (!v)
+            return false;
+        s->v = v;
+        s->cap = cap;
+    }
+    s->v[s->n++] = x;
+    return true;
+}
+
+struct tv_replay_log {
+    FILE* csv;
+    char csv_name[4200];
+    series psnr, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
+    uint64_t rows, misses, identical;
+    double sum_mse;
+    uint64_t frames_missed_last; /* frame number of the last miss, to count frames not rows */
+    bool any_miss;
+};
+
+static const char* k_header =
+    "frame,t,eye,px,py,pz,qx,qy,qz,qw,pose_age_ms,"
+    "pred_px,pred_py,pred_pz,pred_qx,pred_qy,pred_qz,pred_qw,pred_err_pos_m,pred_err_rot_deg,pred_horizon_ms,"
+    "delta_m,fov_pvs_deg,pvs_id,pvs_age_ms,inside_viewcell,miss_reason,pvs_tris,pvs_fraction,"
+    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms\n";
+
+tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size)
+{
+    tv_replay_log* log = calloc(1, sizeof *log);
+    if (!log) {
+        snprintf(err, err_size, "out of memory");
+        return NULL;
+    }
+    snprintf(log->csv_name, sizeof log->csv_name, "%s/frames.csv", dir);
+    log->csv = fopen(log->csv_name, "w");
+    if (!log->csv || fputs(k_header, log->csv) < 0 || fflush(log->csv) != 0) {
+        snprintf(err, err_size, "%s: cannot write", log->csv_name);
+        if (log->csv)
+            fclose(log->csv);
+        free(log);
+        return NULL;
+    }
+    return log;
+}
+
+bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
+{
+    const pred_pose* p = &r->pose;
+    const pred_pose* q = &r->predicted;
+    int n = fprintf(log->csv,
+                    "%llu,%.6f,%s,%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.3f,"
+                    "%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.6f,%.4f,%.3f,"
+                    "%.4f,%.3f,%u,%.3f,%d,%s,%u,%.6f,"
+                    "%.3f,%llu,%llu,%.3f,%.3f,%.3f\n",
+                    (unsigned long long)r->frame, r->t, r->eye == 0 ? "left" : "right", p->p[0], p->p[1], p->p[2],
+                    p->q[0], p->q[1], p->q[2], p->q[3], r->pose_age_ms, q->p[0], q->p[1], q->p[2], q->q[0], q->q[1],
+                    q->q[2], q->q[3], r->pred_err_pos_m, r->pred_err_rot_deg, r->pred_horizon_ms, r->delta_m,
+                    r->fov_pvs_deg, r->pvs_id, r->pvs_age_ms, r->inside ? 1 : 0, r->miss_reason, r->pvs_tris,
+                    r->pvs_fraction, isinf(r->psnr_db) ? INFINITY : r->psnr_db, (unsigned long long)r->fn_pixels,
+                    (unsigned long long)r->diff_pixels, r->pvs_compute_ms, r->render_pvs_ms, r->render_full_ms);
+    /* flushing every row is what lets an interrupted replay keep its log */
+    if (n < 0 || fflush(log->csv) != 0)
+        return false;
+    log->rows++;
+    if (isinf(r->psnr_db))
+        log->identical++;
+    else
+        log->sum_mse += 255.0 * 255.0 / pow(10.0, r->psnr_db / 10.0);
+    if (!r->inside && (!log->any_miss || log->frames_missed_last != r->frame)) {
+        log->misses++;
+        log->any_miss = true;
+        log->frames_missed_last = r->frame;
+    }
+    return series_push(&log->psnr, r->psnr_db) && series_push(&log->fn, (double)r->fn_pixels) &&
+           series_push(&log->pvs_fraction, r->pvs_fraction) && series_push(&log->delta, r->delta_m) &&
+           series_push(&log->fov, r->fov_pvs_deg) && series_push(&log->render_full, r->render_full_ms) &&
+           series_push(&log->render_pvs, r->render_pvs_ms) && series_push(&log->pose_age, r->pose_age_ms);
+}
+
+void tv_replay_log_pvs(tv_replay_log* log, double compute_ms) { series_push(&log->pvs_ms, compute_ms); }
+
+void tv_replay_log_prediction(tv_replay_log* log, double pos_err_m, double rot_err_deg)
+{
+    series_push(&log->pred_pos, pos_err_m);
+    series_push(&log->pred_rot, rot_err_deg);
+}
+
+double tv_replay_log_worst_psnr(const tv_replay_log* log)
+{
+    return tv_percentile(log->psnr.v, log->psnr.n, 0.0);
+}
+
+/* JSON has no infinity: identical images are written as null and counted separately */
+static void json_number(FILE* f, const char* key, double v, bool last)
+{
+    if (isfinite(v))
+        fprintf(f, "  \"%s\": %.6g%s\n", key, v, last ? "" : ",");
+    else
+        fprintf(f, "  \"%s\": null%s\n", key, last ? "" : ",");
+}
+
+static void free_series(tv_replay_log* log)
+{
+    series* all[] = {&log->psnr,        &log->fn,         &log->pvs_fraction, &log->delta,
+                     &log->fov,         &log->render_full, &log->render_pvs,  &log->pvs_ms,
+                     &log->pred_pos,    &log->pred_rot,   &log->pose_age};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
+        free(all[i]->v);
+}
+
+bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_meta* m, FILE* table, char* err,
+                          size_t err_size)
+{
+    struct {
+        double psnr_mean, psnr_min, psnr_p5, fn_mean, fn_max, pvs_fraction, delta, fov, pvs_ms, pvs_ms_median,
+            full_ms, pvs_render_ms, pred_pos_p99, pred_rot_p99, pose_age;
+    } sm = {
+        /* PSNR of the mean squared error: identical frames (PSNR +inf) count as zero error */
+        .psnr_mean = log->rows == 0 ? NAN
+                     : log->sum_mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / (log->sum_mse / (double)log->rows))
+                                          : INFINITY,
+        .psnr_min = tv_percentile(log->psnr.v, log->psnr.n, 0.0),
+        .psnr_p5 = tv_percentile(log->psnr.v, log->psnr.n, 5.0),
+        .fn_mean = tv_mean(log->fn.v, log->fn.n),
+        .fn_max = tv_percentile(log->fn.v, log->fn.n, 100.0),
+        .pvs_fraction = tv_mean(log->pvs_fraction.v, log->pvs_fraction.n),
+        .delta = tv_mean(log->delta.v, log->delta.n),
+        .fov = tv_mean(log->fov.v, log->fov.n),
+        .pvs_ms = tv_mean(log->pvs_ms.v, log->pvs_ms.n),
+        .pvs_ms_median = tv_percentile(log->pvs_ms.v, log->pvs_ms.n, 50.0),
+        .full_ms = tv_mean(log->render_full.v, log->render_full.n),
+        .pvs_render_ms = tv_mean(log->render_pvs.v, log->render_pvs.n),
+        .pred_pos_p99 = tv_percentile(log->pred_pos.v, log->pred_pos.n, 99.0),
+        .pred_rot_p99 = tv_percentile(log->pred_rot.v, log->pred_rot.n, 99.0),
+        .pose_age = tv_mean(log->pose_age.v, log->pose_age.n),
+    };
+
+    char name[4200];
+    snprintf(name, sizeof name, "%s/summary.json", dir);
+    FILE* f = fopen(name, "w");
+    bool ok = f != NULL;
+    if (f) {
+        fprintf(f, "{\n");
+        fprintf(f, "  \"scene\": \"%s\",\n  \"path\": \"%s\",\n  \"method\": \"%s\",\n", m->scene, m->path, m->method);
+        fprintf(f, "  \"predictor\": \"%s\",\n  \"policy\": \"%s\",\n", m->predictor, m->policy);
+        fprintf(f, "  \"latency_model\": \"%s\",\n", m->latency_model);
+        fprintf(f, "  \"scene_tris\": %u,\n  \"width\": %u,\n  \"height\": %u,\n", m->scene_tris, m->width, m->height);
+        fprintf(f, "  \"eye_fov_deg\": %.3f,\n", m->eye_fov_deg);
+        fprintf(f, "  \"display_frames\": %llu,\n", (unsigned long long)m->display_frames);
+        fprintf(f, "  \"frames\": %llu,\n", (unsigned long long)log->rows);
+        fprintf(f, "  \"identical_frames\": %llu,\n", (unsigned long long)log->identical);
+        json_number(f, "psnr_mean_db", sm.psnr_mean, false);
+        json_number(f, "psnr_min_db", sm.psnr_min, false);
+        json_number(f, "psnr_p5_db", sm.psnr_p5, false);
+        json_number(f, "fn_pixels_mean", sm.fn_mean, false);
+        json_number(f, "fn_pixels_max", sm.fn_max, false);
+        fprintf(f, "  \"viewcell_miss_frames\": %llu,\n", (unsigned long long)log->misses);
+        json_number(f, "pvs_fraction_mean", sm.pvs_fraction, false);
+        json_number(f, "delta_mean_m", sm.delta, false);
+        json_number(f, "fov_pvs_mean_deg", sm.fov, false);
+        fprintf(f, "  \"pvs_count\": %zu,\n", log->pvs_ms.n);
+        json_number(f, "pvs_ms_mean", sm.pvs_ms, false);
+        json_number(f, "pvs_ms_median", sm.pvs_ms_median, false);
+        json_number(f, "render_full_ms_mean", sm.full_ms, false);
+        json_number(f, "render_pvs_ms_mean", sm.pvs_render_ms, false);
+        json_number(f, "pred_err_pos_p99_m", sm.pred_pos_p99, false);
+        json_number(f, "pred_err_rot_p99_deg", sm.pred_rot_p99, false);
+        json_number(f, "pose_age_ms_mean", sm.pose_age, false);
+        json_number(f, "wall_s", m->wall_s, true);
+        fprintf(f, "}\n");
+        ok = fclose(f) == 0;
+    }
+    if (!ok)
+        snprintf(err, err_size, "%s: cannot write", name);
+    if (table) {
+        fprintf(table, "\n trimvr replay: %s along %s\n", m->scene, m->path);
+        fprintf(table, " method %s, predictor %s, policy %s, latency %s, %ux%u, eye FOV %.0f deg\n", m->method,
+                m->predictor, m->policy, m->latency_model, m->width, m->height, m->eye_fov_deg);
+        fprintf(table, " -------------------------------------------------------------------\n");
+        fprintf(table, " frames evaluated      %8llu   (of %llu display frames, %llu identical)\n",
+                (unsigned long long)log->rows, (unsigned long long)m->display_frames,
+                (unsigned long long)log->identical);
+        fprintf(table, " PSNR mean / p5 / min  %8.2f / %.2f / %.2f dB\n", sm.psnr_mean, sm.psnr_p5, sm.psnr_min);
+        fprintf(table, " FN pixels mean / max  %8.2f / %.0f\n", sm.fn_mean, sm.fn_max);
+        fprintf(table, " viewcell misses       %8llu frames\n", (unsigned long long)log->misses);
+        fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);
+        fprintf(table, " delta / PVS FOV       %8.3f m / %.1f deg (means)\n", sm.delta, sm.fov);
+        fprintf(table, " PVS compute           %8.1f ms mean over %zu PVSs\n", sm.pvs_ms, log->pvs_ms.n);
+        fprintf(table, " render full / PVS     %8.2f / %.2f ms mean\n", sm.full_ms, sm.pvs_render_ms);
+        fprintf(table, " prediction p99        %8.4f m / %.3f deg\n", sm.pred_pos_p99, sm.pred_rot_p99);
+        fprintf(table, " wall time             %8.1f s\n", m->wall_s);
+    }
+    fclose(log->csv);
+    free_series(log);
+    free(log);
+    return ok;
+}

@@ -1,0 +1,74 @@
+/* replay_log.h - the replay's outputs: frames.csv (one row per evaluated
+ * frame and eye, flushed row by row so an interrupted run keeps every
+ * finished frame), the running summary, summary.json and the end-of-run
+ * table. Column meanings: docs/replay.md. */
+#ifndef TRIMVR_APP_REPLAY_LOG_H
+#define TRIMVR_APP_REPLAY_LOG_H
+
+#include "pose.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+
+typedef struct tv_frame_row {
+    uint64_t frame;
+    double t;                /* display time of the frame, s */
+    int eye;                 /* 0 left, 1 right */
+    pred_pose pose;          /* late-latched eye pose used to render */
+    double pose_age_ms;      /* submit time minus the latched sensor sample's time */
+    pred_pose predicted;     /* this eye as predicted when the current PVS was requested */
+    double pred_err_pos_m, pred_err_rot_deg;
+    double pred_horizon_ms;  /* frame time minus that request time */
+    double delta_m, fov_pvs_deg;
+    uint32_t pvs_id;
+    double pvs_age_ms;       /* frame time minus the PVS's request time */
+    bool inside;             /* eye covered by the PVS's viewcell */
+    const char* miss_reason; /* "covered", "axial", "radial", "frustum" */
+    uint32_t pvs_tris;
+    double pvs_fraction;
+    double psnr_db;          /* +inf when identical */
+    uint64_t fn_pixels;      /* pixels whose full-render triangle is not in the PVS */
+    uint64_t diff_pixels;    /* pixels whose colour differs at all */
+    double pvs_compute_ms;   /* wall clock of the PVS on the worker */
+    double render_pvs_ms, render_full_ms;
+} tv_frame_row;
+
+typedef struct tv_replay_log tv_replay_log;
+
+/* Creates DIR/frames.csv with its header. NULL (message in err) on failure. */
+tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size);
+
+/* Appends and flushes one row; accumulates the summary. False on a write error. */
+bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* row);
+
+/* Per-PVS accounting (once per delivered PVS). */
+void tv_replay_log_pvs(tv_replay_log* log, double compute_ms);
+
+/* Per display frame (not only evaluated ones): prediction error of the head
+ * at the frame time relative to the PVS request's prediction, for the p99s. */
+void tv_replay_log_prediction(tv_replay_log* log, double pos_err_m, double rot_err_deg);
+
+typedef struct tv_replay_meta {
+    const char* scene;
+    const char* path;
+    const char* method;
+    const char* predictor;
+    const char* policy;
+    const char* latency_model;
+    uint32_t scene_tris;
+    unsigned width, height;
+    double eye_fov_deg;
+    uint64_t display_frames;
+    double wall_s;
+} tv_replay_meta;
+
+/* Writes DIR/summary.json and prints the one-screen table to `table`
+ * (may be NULL). Closes frames.csv and frees the log. */
+bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_meta* meta, FILE* table,
+                          char* err, size_t err_size);
+
+/* Summary values the caller may want after the run (valid until finish). */
+double tv_replay_log_worst_psnr(const tv_replay_log* log);
+
+#endif
