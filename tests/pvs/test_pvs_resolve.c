@@ -1,0 +1,359 @@
+/* Trim-sequence resolve (P3 reference): paper Figure 9 (R1, R2, R3) and
+ * Figure 5, soups (consecutive fronts/backs), interpenetration, carried
+ * intervals, fast paths and the overflow policy. Depths are arbitrary
+ * monotonic units; F/B/T/U build fronts (triangle id), backs, trims and
+ * umbrae (trim-region id). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "resolve.h"
+#include "pvs_test_scenes.h"
+#include "test.h"
+
+typedef struct item {
+    uint32_t kind;
+    float depth;
+    uint32_t id;
+} item;
+
+#define F(d, id) {TV_ENTRY_FRONT, d, id}
+#define B(d) {TV_ENTRY_BACK, d, 0}
+#define T(d, r) {TV_ENTRY_TRIM, d, r}
+#define U(d, r) {TV_ENTRY_UMBRA, d, r}
+
+typedef struct layer_result {
+    uint32_t out[PVS_RESOLVE_MAX_OUTPUT];
+    uint32_t count;
+    uint32_t spilled[64]; /* fronts P2 could not store (added to the PVS directly) */
+    uint32_t spilled_count;
+    bool overflowed;
+} layer_result;
+
+static layer_result run_layer(pvs_pixel_state* s, const item* items, uint32_t n)
+{
+    pvs_kbuf k;
+    memset(&k, 0, sizeof k);
+    layer_result r = {0};
+    for (uint32_t i = 0; i < n; i++) {
+        if (!pvs_kbuf_push(&k, items[i].kind, items[i].depth, items[i].id) && items[i].kind == TV_ENTRY_FRONT)
+            r.spilled[r.spilled_count++] = items[i].id;
+    }
+    r.count = pvs_resolve_pixel(s, &k, r.out, &r.overflowed);
+    return r;
+}
+
+/* Output equals exactly the ids in `want` (order free). */
+static bool same_set(const layer_result* r, const uint32_t* want, uint32_t n)
+{
+    if (r->count != n)
+        return false;
+    for (uint32_t i = 0; i < n; i++) {
+        bool found = false;
+        for (uint32_t j = 0; j < r->count; j++)
+            found |= r->out[j] == want[i];
+        if (!found)
+            return false;
+    }
+    return true;
+}
+
+#define CHECK_OUT(r, ...)                                                       \
+    do {                                                                        \
+        const uint32_t want_[] = {__VA_ARGS__};                                 \
+        TV_CHECK(same_set(&(r), want_, sizeof want_ / sizeof want_[0]));        \
+    } while (0)
+#define CHECK_NONE(r) TV_CHECK((r).count == 0)
+#define RUN(s, ...)                                                             \
+    run_layer(&(s), (const item[]){__VA_ARGS__}, sizeof((const item[]){__VA_ARGS__}) / sizeof(item))
+
+#define C(d, id) {TV_ENTRY_FRONT, d, (id) | TV_ID_CANDIDATE}
+
+/* Candidate fronts (touching the pixel off its centre) are output where not
+ * hidden, inside validated intervals too, but never occlude: a candidate
+ * before an invalid interval does not terminate it (F3 at 5 is output, as
+ * without the candidate), one inside an umbra or behind the terminator is
+ * not output, and output ids carry no flag. */
+static void test_candidate_fronts(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, C(0.5f, 7), F(1.0f, 1), C(1.3f, 8), T(1.2f, 1), B(1.5f), U(3.0f, 1), C(2.0f, 9),
+                         F(5.0f, 3), B(6.0f), C(7.0f, 10));
+    CHECK_OUT(r, 7, 1, 8, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    pvs_pixel_state alone = {0};
+    r = RUN(alone, T(0.5f, 1), C(1.0f, 4), F(2.0f, 5), B(3.0f));
+    CHECK_OUT(r, 4, 5); /* without the flag, [C, F, B] would be one invalid interval and F lost */
+    TV_CHECK(alone.stencil == TV_STENCIL_SEALED);
+}
+
+/* R1: f1 t1 b1 validated (u1 at 3) -> f1 out; f2 inside u1 ignored; b2
+ * behind u1 is the terminator; f3 never reached. */
+static void test_figure9_r1(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), B(4.0f), F(5.0f, 3), B(6.0f));
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    layer_result later = RUN(s, F(0.5f, 9), B(0.6f), T(0.55f, 5));
+    CHECK_NONE(later); /* a sealed pixel adds nothing */
+}
+
+/* R2: two validated intervals, the second inside the first's umbra; f3
+ * (inside u2, unfinished) carried; in layer i+1 b3 terminates. */
+static void test_figure9_r2(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
+                         U(4.0f, 2), F(3.5f, 3));
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.stencil == TV_STENCIL_TRIMMED);
+    TV_CHECK(s.carry_count == 1 && s.carry[0].kind == TV_ENTRY_FRONT && s.carry[0].id == 3);
+    TV_CHECK(s.hide_begin == 2.0f && s.hide_end == 4.0f); /* u2 still open at f3 */
+    layer_result r2 = RUN(s, B(5.0f), F(6.0f, 4), B(7.0f));
+    CHECK_NONE(r2);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* R3: like R2 but f3 lies behind u2: carried, validated in layer i+1 by t3,
+ * output there; f4 inside u3 ignored; f5 behind u3 terminates. */
+static void test_figure9_r3(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
+                         U(4.0f, 2), F(4.5f, 3));
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.carry_count == 1 && s.hide_begin >= s.hide_end);
+    layer_result r2 = RUN(s, T(5.0f, 3), B(5.5f), U(8.0f, 3), F(7.0f, 4), B(7.5f), F(9.0f, 5), B(10.0f));
+    CHECK_OUT(r2, 3, 5);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* Figure 5 left: the occludee's trim region lies inside the occluder's
+ * umbra: the occludee (and what its umbra covers) is not output; the first
+ * untrimmed object behind the outer umbra terminates. */
+static void test_figure5_umbra_inside_umbra(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), T(1.1f, 1), B(1.5f), U(10.0f, 1), F(3.0f, 2), T(3.2f, 2), B(3.5f),
+                         U(6.0f, 2), F(8.0f, 3), B(9.0f), F(11.0f, 4), B(12.0f));
+    CHECK_OUT(r, 1, 4);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* Figure 5 middle: the occludee's trim region is outside the umbra: both
+ * fronts are visible, and the ray goes on past the second umbra. */
+static void test_figure5_disjoint_umbrae(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), T(1.1f, 1), B(1.5f), U(4.0f, 1), F(5.0f, 2), T(5.2f, 2), B(5.5f),
+                         U(8.0f, 2), F(7.0f, 3), B(7.5f));
+    CHECK_OUT(r, 1, 2);
+    TV_CHECK(s.stencil == TV_STENCIL_TRIMMED);
+}
+
+/* Soups: consecutive fronts extend the interval (every front of the run is
+ * output); extra backs inside the umbra are ignored, one behind it ends the ray. */
+static void test_soup_consecutive_faces(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), F(1.1f, 2), T(1.2f, 7), B(1.5f), B(1.6f), U(3.0f, 7), F(4.0f, 3), B(5.0f));
+    CHECK_OUT(r, 1, 2, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    pvs_pixel_state s2 = {0};
+    layer_result r2 = RUN(s2, F(1.0f, 1), T(1.2f, 7), B(1.5f), U(1.55f, 7), B(1.6f), F(4.0f, 3), B(5.0f));
+    CHECK_OUT(r2, 1); /* b at 1.6 lies behind the umbra: terminator */
+    TV_CHECK(s2.stencil == TV_STENCIL_SEALED);
+    /* The trim only validates its own interval: f2's interval has none. */
+    pvs_pixel_state s3 = {0};
+    layer_result r3 = RUN(s3, T(0.5f, 7), U(0.9f, 7), F(1.0f, 1), B(1.5f));
+    CHECK_OUT(r3, 1);
+    TV_CHECK(s3.stencil == TV_STENCIL_SEALED);
+}
+
+/* Interpenetrating objects A [1, 3] and B [2, 4]: with A trimmed both fronts
+ * are candidates and B's back is inside A's umbra; without a trim A wins. */
+static void test_interpenetrating(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 10), F(2.0f, 11), T(1.5f, 1), B(3.0f), B(4.0f), U(5.0f, 1), F(6.0f, 12), B(7.0f));
+    CHECK_OUT(r, 10, 11, 12);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    pvs_pixel_state s2 = {.stencil = TV_STENCIL_TRIMMED};
+    layer_result r2 = RUN(s2, F(1.0f, 10), F(2.0f, 11), B(3.0f), B(4.0f), F(6.0f, 12), B(7.0f));
+    CHECK_OUT(r2, 10);
+    TV_CHECK(s2.stencil == TV_STENCIL_SEALED);
+}
+
+/* The trim and umbra of an unfinished interval arrive before its back:
+ * carried together, validated in the next layer. */
+static void test_carry_trim_and_umbra(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 4), U(6.0f, 4));
+    CHECK_NONE(r);
+    TV_CHECK(s.carry_count == 3);
+    layer_result r2 = RUN(s, B(1.5f), F(3.0f, 2), B(3.5f), F(7.0f, 3), B(8.0f));
+    CHECK_OUT(r2, 1, 3); /* f2 lies in the carried umbra, f3 terminates */
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* Without any trim fragment an untrimmed pixel is the visibility buffer's;
+ * a trimmed pixel with a lone back face is sealed. */
+static void test_fast_paths(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), B(2.0f), F(3.0f, 2));
+    CHECK_NONE(r);
+    TV_CHECK(s.stencil == TV_STENCIL_UNTRIMMED);
+    pvs_pixel_state t = {.stencil = TV_STENCIL_TRIMMED};
+    layer_result r2 = RUN(t, B(2.0f), F(3.0f, 2), B(4.0f));
+    CHECK_NONE(r2);
+    TV_CHECK(t.stencil == TV_STENCIL_SEALED);
+}
+
+/* k-buffer overflow: every front is either spilled by P2 or output by P3,
+ * and the pixel stays open: later layers output all their fronts. */
+static void test_overflow_keeps_every_front(void)
+{
+    item items[TV_K_FRONT + 12 + 2];
+    uint32_t n = 0;
+    items[n++] = (item)T(0.5f, 1);
+    items[n++] = (item)B(0.7f);
+    for (uint32_t i = 0; i < TV_K_FRONT + 12; i++)
+        items[n++] = (item)F(1.0f + (float)i, 100 + i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed);
+    TV_CHECK(r.spilled_count == 12 && r.count == TV_K_FRONT);
+    bool all = true;
+    for (uint32_t i = 0; i < TV_K_FRONT + 12; i++) {
+        bool found = false;
+        for (uint32_t j = 0; j < r.count; j++)
+            found |= r.out[j] == 100 + i;
+        for (uint32_t j = 0; j < r.spilled_count; j++)
+            found |= r.spilled[j] == 100 + i;
+        all &= found;
+    }
+    TV_CHECK(all);
+    TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW);
+    layer_result r2 = RUN(s, F(50.0f, 7), B(51.0f), F(52.0f, 8), B(53.0f));
+    CHECK_OUT(r2, 7, 8); /* 7 would have terminated a normal pixel */
+    TV_CHECK(r2.overflowed && s.stencil == TV_STENCIL_OVERFLOW);
+}
+
+/* An overflowing umbra list alone also triggers the policy. */
+static void test_overflow_umbra_list(void)
+{
+    item items[TV_K_UMBRA + 4];
+    uint32_t n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)T(1.2f, 0);
+    items[n++] = (item)B(1.5f);
+    for (uint32_t i = 0; n < TV_K_UMBRA + 4; i++)
+        items[n++] = (item)U(5.0f + (float)i, i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed);
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW);
+}
+
+/* A trailing run longer than the carry: its fronts are output at once. */
+static void test_carry_overflow(void)
+{
+    item items[TV_K_CARRY + 3];
+    uint32_t n = 0;
+    items[n++] = (item)T(0.5f, 1);
+    for (uint32_t i = 0; i < TV_K_CARRY + 2; i++)
+        items[n++] = (item)F(1.0f + (float)i, 200 + i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed && r.count == TV_K_CARRY + 2);
+    TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW && s.carry_count == 0);
+}
+
+static int cmp_u32(const void* a, const void* b)
+{
+    uint32_t x = *(const uint32_t*)a, y = *(const uint32_t*)b;
+    return (x > y) - (x < y);
+}
+
+static item random_item(uint32_t* rng, uint32_t i)
+{
+    float depth = 1.0f + 20.0f * pvs_test_rand(rng);
+    uint32_t region = (uint32_t)(4.0f * pvs_test_rand(rng));
+    switch ((uint32_t)(6.0f * pvs_test_rand(rng))) {
+    case 0:
+    case 1: return (item)F(depth, 1000 + i);
+    case 2:
+    case 3: return (item)B(depth);
+    case 4: return (item)T(depth, region);
+    default: return (item)U(depth, region);
+    }
+}
+
+/* P2 fills the k-buffers in whatever order the rasteriser's atomics give:
+ * the resolve must not depend on it. Also, in a trimmed pixel without carried
+ * state whose nearest face is a front followed by some back, that front is
+ * output (it starts either a validated interval or the terminator). */
+static void test_random_sequences_order_free(void)
+{
+    uint32_t rng = 777, checked_nearest = 0;
+    for (int round = 0; round < 400; round++) {
+        pvs_pixel_state a = {.stencil = TV_STENCIL_TRIMMED}, b = a;
+        for (int layer = 0; layer < 3; layer++) {
+            item items[24], shuffled[24];
+            uint32_t n = 4 + (uint32_t)(20.0f * pvs_test_rand(&rng));
+            for (uint32_t i = 0; i < n; i++)
+                items[i] = shuffled[i] = random_item(&rng, 100 * (uint32_t)layer + i);
+            for (uint32_t i = n - 1; i > 0; i--) {
+                uint32_t j = (uint32_t)((float)(i + 1) * pvs_test_rand(&rng));
+                item t = shuffled[i];
+                shuffled[i] = shuffled[j];
+                shuffled[j] = t;
+            }
+            bool fresh = a.stencil == TV_STENCIL_TRIMMED && a.carry_count == 0 && a.hide_begin >= a.hide_end;
+            layer_result ra = run_layer(&a, items, n), rb = run_layer(&b, shuffled, n);
+            qsort(ra.out, ra.count, sizeof ra.out[0], cmp_u32);
+            qsort(rb.out, rb.count, sizeof rb.out[0], cmp_u32);
+            TV_CHECK(ra.count == rb.count && memcmp(ra.out, rb.out, ra.count * sizeof ra.out[0]) == 0);
+            TV_CHECK(a.stencil == b.stencil && a.carry_count == b.carry_count);
+            TV_CHECK(a.hide_begin == b.hide_begin && a.hide_end == b.hide_end);
+            const item* nearest = NULL;
+            bool back_after = false;
+            for (uint32_t i = 0; i < n; i++) {
+                if (items[i].kind == TV_ENTRY_FRONT && (!nearest || items[i].depth < nearest->depth))
+                    nearest = &items[i];
+            }
+            bool back_before = false;
+            for (uint32_t i = 0; i < n && nearest; i++) {
+                back_after |= items[i].kind == TV_ENTRY_BACK && items[i].depth >= nearest->depth;
+                back_before |= items[i].kind == TV_ENTRY_BACK && items[i].depth < nearest->depth;
+            }
+            if (fresh && nearest && back_after && !back_before) {
+                checked_nearest++;
+                TV_CHECK(bsearch(&nearest->id, ra.out, ra.count, sizeof ra.out[0], cmp_u32) != NULL);
+            }
+        }
+    }
+    TV_CHECK(checked_nearest > 100);
+}
+
+int main(void)
+{
+    TV_TEST_RUN(test_candidate_fronts);
+    TV_TEST_RUN(test_figure9_r1);
+    TV_TEST_RUN(test_figure9_r2);
+    TV_TEST_RUN(test_figure9_r3);
+    TV_TEST_RUN(test_figure5_umbra_inside_umbra);
+    TV_TEST_RUN(test_figure5_disjoint_umbrae);
+    TV_TEST_RUN(test_soup_consecutive_faces);
+    TV_TEST_RUN(test_interpenetrating);
+    TV_TEST_RUN(test_carry_trim_and_umbra);
+    TV_TEST_RUN(test_fast_paths);
+    TV_TEST_RUN(test_overflow_keeps_every_front);
+    TV_TEST_RUN(test_overflow_umbra_list);
+    TV_TEST_RUN(test_carry_overflow);
+    TV_TEST_RUN(test_random_sequences_order_free);
+    return tv_test_finish();
+}

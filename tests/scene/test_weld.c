@@ -1,0 +1,161 @@
+/* Welding and adjacency on meshes with known answers. */
+#include "test.h"
+#include "weld.h"
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Unit cube as a soup: 12 triangles, 36 vertices, outward CCW winding. */
+static const float cube_corner[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+                                         { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+static const uint32_t cube_tris[12][3] = { { 0, 2, 1 }, { 0, 3, 2 }, { 4, 5, 6 }, { 4, 6, 7 }, { 0, 1, 5 }, { 0, 5, 4 },
+                                           { 3, 6, 2 }, { 3, 7, 6 }, { 0, 4, 7 }, { 0, 7, 3 }, { 1, 2, 6 }, { 1, 6, 5 } };
+
+static void cube_soup(float* pos, uint32_t* idx)
+{
+    for (int t = 0; t < 12; t++)
+        for (int c = 0; c < 3; c++) {
+            memcpy(pos + 3 * (3 * t + c), cube_corner[cube_tris[t][c]], sizeof(float) * 3);
+            idx[3 * t + c] = (uint32_t)(3 * t + c);
+        }
+}
+
+static bool share_edge(const uint32_t* a, const uint32_t* b)
+{
+    int shared = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            shared += a[i] == b[j];
+    return shared == 2;
+}
+
+static void test_weld_soup(void)
+{
+    float pos[108];
+    uint32_t idx[36], remap[36];
+    cube_soup(pos, idx);
+    pos[3 * 3 + 0] = -0.0f; /* vertex 3 is corner (0,0,0): a -0.0 copy must still weld */
+    TV_CHECK(scn_weld_positions(remap, pos, 36) == 8);
+    for (int v = 0; v < 36; v++) {
+        TV_CHECK(remap[v] <= (uint32_t)v);
+        TV_CHECK(remap[remap[v]] == remap[v]);
+        uint32_t corner = cube_tris[v / 3][v % 3];
+        for (int w = 0; w < v; w++)
+            if (cube_tris[w / 3][w % 3] == corner) {
+                TV_CHECK(remap[v] == (uint32_t)w); /* smallest id with that position */
+                break;
+            }
+    }
+    float near[6] = { 1.0f, 2.0f, 3.0f, 1.0f, 2.0f, 3.0000002f }; /* one ulp apart: distinct */
+    uint32_t r2[2];
+    TV_CHECK(scn_weld_positions(r2, near, 2) == 2);
+    TV_CHECK(r2[1] == 1);
+}
+
+static void test_adjacency_cube(void)
+{
+    float pos[108];
+    uint32_t idx[36], remap[36], adj[36];
+    cube_soup(pos, idx);
+    scn_weld_positions(remap, pos, 36);
+    scn_build_adjacency(adj, idx, 12, remap);
+    for (uint32_t t = 0; t < 12; t++)
+        for (int e = 0; e < 3; e++) {
+            uint32_t n = adj[3 * t + e];
+            TV_CHECK(n < 12 && n != t);
+            if (n >= 12)
+                continue;
+            /* the neighbour really holds this edge's two corners, and points back */
+            uint32_t a = cube_tris[t][e], b = cube_tris[t][(e + 1) % 3];
+            int found = 0;
+            for (int f = 0; f < 3; f++) {
+                uint32_t c = cube_tris[n][f], d = cube_tris[n][(f + 1) % 3];
+                if ((c == a && d == b) || (c == b && d == a)) {
+                    found++;
+                    TV_CHECK(adj[3 * n + f] == t);
+                }
+            }
+            TV_CHECK(found == 1);
+            TV_CHECK(share_edge(cube_tris[t], cube_tris[n]));
+        }
+}
+
+static void test_adjacency_open_quad(void)
+{
+    /* two triangles over a quad (soup): one shared diagonal, four borders */
+    float pos[18] = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0 };
+    uint32_t idx[6] = { 0, 1, 2, 3, 4, 5 }, remap[6], adj[6];
+    TV_CHECK(scn_weld_positions(remap, pos, 6) == 4);
+    scn_build_adjacency(adj, idx, 2, remap);
+    TV_CHECK(adj[0] == SCN_EDGE_BORDER && adj[1] == SCN_EDGE_BORDER && adj[2] == 1);
+    TV_CHECK(adj[3] == 0 && adj[4] == SCN_EDGE_BORDER && adj[5] == SCN_EDGE_BORDER);
+}
+
+static void test_adjacency_fin(void)
+{
+    /* three triangles on the edge (0,0,0)-(0,1,0): non-manifold; the rest border */
+    float pos[] = { 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 0, 0, 1, 0, -1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1 };
+    uint32_t idx[9] = { 0, 1, 2, 3, 4, 5, 6, 7, 8 }, remap[9], adj[9];
+    TV_CHECK(scn_weld_positions(remap, pos, 9) == 5);
+    scn_build_adjacency(adj, idx, 3, remap);
+    TV_CHECK(adj[0] == SCN_EDGE_NONMANIFOLD && adj[3] == SCN_EDGE_NONMANIFOLD && adj[6] == SCN_EDGE_NONMANIFOLD);
+    for (int t = 0; t < 3; t++)
+        TV_CHECK(adj[3 * t + 1] == SCN_EDGE_BORDER && adj[3 * t + 2] == SCN_EDGE_BORDER);
+}
+
+static void test_adjacency_mixed_winding_and_degenerate(void)
+{
+    /* triangle 1 walks the shared edge in the same direction as triangle 0
+     * (inconsistent winding): still paired. Triangle 2 has two welded corners. */
+    float pos[] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -1, 0, 5, 5, 5, 5, 5, 5, 6, 5, 5 };
+    uint32_t idx[9] = { 0, 1, 2, 3, 4, 5, 6, 7, 8 }, remap[9], adj[9];
+    scn_weld_positions(remap, pos, 9);
+    scn_build_adjacency(adj, idx, 3, remap);
+    TV_CHECK(adj[0] == 1 && adj[3] == 0);
+    TV_CHECK(adj[6] == SCN_EDGE_BORDER && adj[7] == SCN_EDGE_BORDER && adj[8] == SCN_EDGE_BORDER);
+}
+
+static void test_adjacency_grid_scale(void)
+{
+    /* 512x512 indexed grid (524288 triangles): interior edges pair, outer ones border */
+    const uint32_t n = 512, nv = (n + 1) * (n + 1), nt = 2 * n * n;
+    float* pos = malloc(sizeof(float) * 3 * nv);
+    uint32_t* idx = malloc(sizeof(uint32_t) * 3 * nt);
+    uint32_t* remap = malloc(sizeof(uint32_t) * nv);
+    uint32_t* adj = malloc(sizeof(uint32_t) * 3 * nt);
+    for (uint32_t j = 0; j <= n; j++)
+        for (uint32_t i = 0; i <= n; i++) {
+            float* p = pos + 3 * (j * (n + 1) + i);
+            p[0] = (float)i, p[1] = 0.0f, p[2] = (float)j;
+        }
+    for (uint32_t j = 0; j < n; j++)
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t a = j * (n + 1) + i, *t = idx + 6 * (j * n + i);
+            t[0] = a, t[1] = a + n + 1, t[2] = a + 1, t[3] = a + 1, t[4] = a + n + 1, t[5] = a + n + 2;
+        }
+    TV_CHECK(scn_weld_positions(remap, pos, nv) == nv);
+    scn_build_adjacency(adj, idx, nt, remap);
+    uint32_t borders = 0, bad = 0;
+    for (uint32_t h = 0; h < 3 * nt; h++) {
+        if (adj[h] == SCN_EDGE_BORDER)
+            borders++;
+        else if (adj[h] >= nt || !share_edge(idx + 3 * (h / 3), idx + 3 * adj[h]))
+            bad++;
+    }
+    TV_CHECK(borders == 4 * n);
+    TV_CHECK(bad == 0);
+    free(pos), free(idx), free(remap), free(adj);
+}
+
+int main(void)
+{
+    TV_TEST_RUN(test_weld_soup);
+    TV_TEST_RUN(test_adjacency_cube);
+    TV_TEST_RUN(test_adjacency_open_quad);
+    TV_TEST_RUN(test_adjacency_fin);
+    TV_TEST_RUN(test_adjacency_mixed_winding_and_degenerate);
+    TV_TEST_RUN(test_adjacency_grid_scale);
+    return tv_test_finish();
+}
