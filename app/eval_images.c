@@ -1,5 +1,6 @@
 #include "eval_images.h"
 
+#include "image_compare.h"
 #include "image_io.h"
 
 #include <math.h>
@@ -37,30 +38,6 @@ void tv_eval_images_free(tv_eval_images* w)
 
 typedef enum colouring { COLOUR_FIGURE1, COLOUR_FALSE_NEGATIVES } colouring;
 
-/* Recolours a full render by triangle class. */
-static void classify(const tv_eval_images* w, colouring mode, const uint8_t* rgba, const uint32_t* ids,
-                     size_t pixels, uint8_t* rgb)
-{
-    for (size_t i = 0; i < pixels; i++) {
-        const uint8_t* c = &rgba[4 * i];
-        uint8_t* o = &rgb[3 * i];
-        uint32_t id = ids[i];
-        int lum = (c[0] * 3 + c[1] * 6 + c[2]) / 10;
-        if (id >= w->triangle_count) { /* background */
-            o[0] = o[1] = o[2] = 16;
-        } else if (mode == COLOUR_FALSE_NEGATIVES) {
-            bool fn = !w->pvs[id];
-            o[0] = fn ? 255 : c[0], o[1] = fn ? 0 : c[1], o[2] = fn ? 0 : c[2];
-        } else if (w->gt[id]) { /* truly visible: shaded as rendered */
-            o[0] = c[0], o[1] = c[1], o[2] = c[2];
-        } else if (w->pvs[id]) { /* false positive: blue */
-            o[0] = (uint8_t)(lum / 4), o[1] = (uint8_t)(lum / 3 + 40), o[2] = (uint8_t)(lum / 2 + 127);
-        } else { /* culled and not visible: grey */
-            o[0] = o[1] = o[2] = (uint8_t)(lum / 4 + 40);
-        }
-    }
-}
-
 static bool render_classified(const tv_eval_images* w, rnd_context* ctx, rnd_target* target,
                               const rnd_gpu_scene* gpu, const rnd_camera* cam, colouring mode, const char* file,
                               uint8_t* rgba, uint32_t* ids, uint8_t* rgb, char* err, size_t err_size)
@@ -71,7 +48,11 @@ static bool render_classified(const tv_eval_images* w, rnd_context* ctx, rnd_tar
         snprintf(err, err_size, "%s: rendering failed (Vulkan error logged)", file);
         return false;
     }
-    classify(w, mode, rgba, ids, (size_t)width * height, rgb);
+    size_t pixels = (size_t)width * height;
+    if (mode == COLOUR_FIGURE1)
+        rnd_colour_figure1(rgba, ids, pixels, w->gt, w->pvs, w->triangle_count, rgb, 3);
+    else
+        rnd_colour_false_negatives(rgba, ids, pixels, w->pvs, w->triangle_count, rgb, 3);
     return scn_image_write_png(file, rgb, width, height, 3, err, err_size);
 }
 
@@ -87,6 +68,20 @@ static void look_camera(const double pos[3], const double forward[3], const doub
     cam->fov_y_deg = fov_y;
     cam->near_m = 0.05f;
     cam->far_m = 2000.0f;
+}
+
+void tv_overview_camera(const scn_scene* scene, const double v0[3], const double forward[3], const double up[3],
+                        rnd_camera* cam)
+{
+    float extent = fmaxf(fmaxf(scene->bounds_max[0] - scene->bounds_min[0], scene->bounds_max[1] - scene->bounds_min[1]),
+                         scene->bounds_max[2] - scene->bounds_min[2]);
+    double back = fmin(fmax(0.08 * extent, 3.0), 25.0); /* far enough to see the region, near enough to read it */
+    double p[3], dir[3];
+    for (int i = 0; i < 3; i++) {
+        p[i] = v0[i] - back * forward[i] + 0.8 * back * up[i];
+        dir[i] = v0[i] + 1.5 * back * forward[i] - p[i];
+    }
+    look_camera(p, dir, up, 60.0f, cam);
 }
 
 bool tv_eval_images_write(const tv_eval_images* w, rnd_context* ctx, const rnd_gpu_scene* gpu,
@@ -117,19 +112,10 @@ bool tv_eval_images_write(const tv_eval_images* w, rnd_context* ctx, const rnd_g
         snprintf(file, sizeof file, "%s/fig1_eye.png", out_dir);
         ok = render_classified(w, ctx, target, gpu, &cam, COLOUR_FIGURE1, file, rgba, ids, rgb, err, err_size);
     }
-    if (ok) { /* overview: behind and above the viewcell, looking down at the region in front of it */
-        float extent = fmaxf(fmaxf(scene->bounds_max[0] - scene->bounds_min[0],
-                                   scene->bounds_max[1] - scene->bounds_min[1]),
-                             scene->bounds_max[2] - scene->bounds_min[2]);
-        double back = fmin(fmax(0.08 * extent, 3.0), 25.0);
-        double p[3], target_pt[3], dir[3];
-        for (int i = 0; i < 3; i++) {
-            p[i] = vc->v0[i] - back * f[i] + 0.8 * back * u[i];
-            target_pt[i] = vc->v0[i] + 1.5 * back * f[i];
-            dir[i] = target_pt[i] - p[i];
-        }
+    if (ok) {
         rnd_camera cam;
-        look_camera(p, dir, u, 60.0f, &cam);
+        double v0[3] = {vc->v0[0], vc->v0[1], vc->v0[2]};
+        tv_overview_camera(scene, v0, f, u, &cam);
         snprintf(file, sizeof file, "%s/fig1_overview.png", out_dir);
         ok = render_classified(w, ctx, target, gpu, &cam, COLOUR_FIGURE1, file, rgba, ids, rgb, err, err_size);
     }

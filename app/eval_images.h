@@ -32,4 +32,10 @@ bool tv_eval_images_write(const tv_eval_images* w, rnd_context* ctx, const rnd_g
 
 void tv_eval_images_free(tv_eval_images* w);
 
+/* The overview camera of Figure 1: behind and above v0 (by a distance that
+ * grows with the scene, 3 to 25 m), looking down at the region in front of
+ * it along `forward`; 60 degrees vertical FOV. */
+void tv_overview_camera(const scn_scene* scene, const double v0[3], const double forward[3], const double up[3],
+                        rnd_camera* cam);
+
 #endif

@@ -53,3 +53,42 @@ size_t rnd_count_fn_pixels(const uint32_t* full_ids, size_t pixel_count, const u
     }
     return count;
 }
+
+typedef enum colour_class { CLASS_KEEP, CLASS_BLUE, CLASS_GREY, CLASS_RED } colour_class;
+
+/* Recolours one pixel; reads all of c before writing o, so c == o is fine. */
+static void paint(const uint8_t* c, colour_class k, uint8_t* o)
+{
+    int lum = (c[0] * 3 + c[1] * 6 + c[2]) / 10;
+    uint8_t r = c[0], g = c[1], b = c[2];
+    switch (k) {
+    case CLASS_KEEP: break;
+    case CLASS_BLUE: r = (uint8_t)(lum / 4), g = (uint8_t)(lum / 3 + 40), b = (uint8_t)(lum / 2 + 127); break;
+    case CLASS_GREY: r = g = b = (uint8_t)(lum / 4 + 40); break;
+    case CLASS_RED: r = (uint8_t)(200 + r / 5), g = (uint8_t)(g / 4), b = (uint8_t)(b / 4); break;
+    }
+    o[0] = r, o[1] = g, o[2] = b;
+}
+
+void rnd_colour_figure1(const uint8_t* rgba, const uint32_t* ids, size_t pixel_count, const uint8_t* visible,
+                        const uint8_t* pvs, size_t triangle_count, uint8_t* out, size_t out_stride)
+{
+    assert(rgba && ids && visible && pvs && out && (out_stride == 3 || out_stride == 4));
+    for (size_t p = 0; p < pixel_count; p++) {
+        uint32_t id = ids[p];
+        assert(id == TV_NO_TRIANGLE || id < triangle_count);
+        colour_class k = id == TV_NO_TRIANGLE ? CLASS_KEEP : visible[id] ? CLASS_KEEP : pvs[id] ? CLASS_BLUE : CLASS_GREY;
+        paint(rgba + 4 * p, k, out + out_stride * p);
+    }
+}
+
+void rnd_colour_false_negatives(const uint8_t* rgba, const uint32_t* ids, size_t pixel_count, const uint8_t* pvs,
+                                size_t triangle_count, uint8_t* out, size_t out_stride)
+{
+    assert(rgba && ids && pvs && out && (out_stride == 3 || out_stride == 4));
+    for (size_t p = 0; p < pixel_count; p++) {
+        uint32_t id = ids[p];
+        assert(id == TV_NO_TRIANGLE || id < triangle_count);
+        paint(rgba + 4 * p, id != TV_NO_TRIANGLE && !pvs[id] ? CLASS_RED : CLASS_KEEP, out + out_stride * p);
+    }
+}

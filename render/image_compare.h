@@ -28,6 +28,21 @@ size_t rnd_count_diff_pixels(const uint8_t* a, const uint8_t* b, size_t pixel_co
 size_t rnd_count_fn_pixels(const uint32_t* full_ids, size_t pixel_count, const uint8_t* tri_in_set,
                            size_t triangle_count);
 
+/* The paper's Figure 1 colours, per pixel of a full render (rgba, 4 bytes
+ * per pixel) and its id buffer, into out (out_stride 3 or 4 bytes per
+ * pixel; out == rgba with stride 4 recolours in place): triangles in
+ * `visible` keep their shading, those only in `pvs` (false positives) turn
+ * blue, the rest grey; background pixels keep their colour. visible and pvs
+ * are byte masks of triangle_count entries. */
+void rnd_colour_figure1(const uint8_t* rgba, const uint32_t* ids, size_t pixel_count, const uint8_t* visible,
+                        const uint8_t* pvs, size_t triangle_count, uint8_t* out, size_t out_stride);
+
+/* False-negative pixels (as rnd_count_fn_pixels counts them) turned red,
+ * blended so the surface stays recognisable; every other pixel keeps its
+ * colour. Same buffers and in-place rule as rnd_colour_figure1. */
+void rnd_colour_false_negatives(const uint8_t* rgba, const uint32_t* ids, size_t pixel_count, const uint8_t* pvs,
+                                size_t triangle_count, uint8_t* out, size_t out_stride);
+
 #ifdef __cplusplus
 }
 #endif

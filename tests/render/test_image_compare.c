@@ -59,11 +59,35 @@ static void false_negative_pixels(void)
     TV_CHECK(rnd_count_fn_pixels(ids, 8, none, 5) == 7); /* background is never a false negative */
 }
 
+/* Figure 1 classes and the red false negatives, per pixel, in place and into RGB. */
+static void figure1_and_false_negative_colours(void)
+{
+    const uint32_t ids[4] = {0, 1, 2, 0xFFFFFFFFu};
+    const uint8_t visible[3] = {1, 0, 0}, pvs[3] = {1, 1, 0}; /* 0 visible, 1 false positive, 2 culled */
+    uint8_t rgba[4 * 4];
+    for (int i = 0; i < 16; i++)
+        rgba[i] = (uint8_t)(100 + i);
+    uint8_t rgb[4 * 3];
+    rnd_colour_figure1(rgba, ids, 4, visible, pvs, 3, rgb, 3);
+    TV_CHECK(rgb[0] == 100 && rgb[1] == 101 && rgb[2] == 102);  /* visible: shaded as rendered */
+    TV_CHECK(rgb[5] > rgb[3] + 60 && rgb[5] > rgb[4] + 30);     /* false positive: blue */
+    TV_CHECK(rgb[6] == rgb[7] && rgb[7] == rgb[8] && rgb[6] < 100); /* culled: dark grey */
+    TV_CHECK(rgb[9] == 112 && rgb[10] == 113 && rgb[11] == 114); /* background kept */
+    uint8_t in_place[16];
+    memcpy(in_place, rgba, sizeof in_place);
+    rnd_colour_false_negatives(in_place, ids, 4, pvs, 3, in_place, 4);
+    TV_CHECK(memcmp(in_place, rgba, 8) == 0);                          /* in the PVS: unchanged */
+    TV_CHECK(in_place[8] > 200 && in_place[9] < 40 && in_place[10] < 40); /* missing: red */
+    TV_CHECK(in_place[11] == rgba[11]);                                 /* alpha untouched */
+    TV_CHECK(memcmp(in_place + 12, rgba + 12, 4) == 0);                /* background */
+}
+
 int main(void)
 {
     TV_TEST_RUN(psnr_identical_is_infinite);
     TV_TEST_RUN(psnr_known_difference);
     TV_TEST_RUN(diff_pixels_with_tolerance);
     TV_TEST_RUN(false_negative_pixels);
+    TV_TEST_RUN(figure1_and_false_negative_colours);
     return tv_test_finish();
 }
