@@ -15,7 +15,7 @@ int tv_cmd_demo(int argc, char** argv)
     float fov = 60.0f, ipd = 0.063f, delta = 0.10f, fov_pvs = 0.0f, quantile = 0.99f, latency_ms = 50.0f;
     float rate = 90.0f, seconds = 0.0f, yaw = 0.0f, start[3] = {0.0f, 0.0f, 0.0f};
     int frames = 0, every = 30, k = 0, samples = 0;
-    bool no_hud = false, mailbox = false, have_start = false;
+    bool no_hud = false, mailbox = false, have_start = false, overview = false;
     const char* start_text = NULL;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (default: the path's '# scene:', else builtin:interior)"},
@@ -33,6 +33,7 @@ int tv_cmd_demo(int argc, char** argv)
         {"k", TV_ARG_INT, &k, "N", "tr: k-buffer slots per pixel (default 16)"},
         {"samples", TV_ARG_INT, &samples, "N", "gt: views per viewcell (default 200)"},
         {"view", TV_ARG_STRING, &view, "V", "initial view: pvs, full or fn (default pvs)"},
+        {"overview", TV_ARG_FLAG, &overview, NULL, "start with the Figure 1 overview in the right half (O toggles it)"},
         {"every", TV_ARG_INT, &every, "N", "render the full scene too and compare every Nth frame (default 30)"},
         {"start", TV_ARG_STRING, &start_text, "X,Y,Z", "without --path: start position (default: scene centre, 1.7 m up)"},
         {"yaw", TV_ARG_FLOAT, &yaw, "DEG", "without --path: start heading, 0 looks down -Z (default 0)"},
@@ -103,6 +104,7 @@ int tv_cmd_demo(int argc, char** argv)
     d.start_yaw_deg = yaw;
     d.mode = strcmp(view, "full") == 0 ? TV_EYE_FULL : strcmp(view, "fn") == 0 ? TV_EYE_FN : TV_EYE_PVS;
     d.hud = !no_hud;
+    d.overview = overview;
     d.mailbox = mailbox;
     d.check_every = every;
     d.frames = frames;

@@ -5,6 +5,7 @@
 #include "clock.h"
 #include "demo_hud.h"
 #include "demo_window.h"
+#include "eval_images.h"
 #include "image_io.h"
 #include "path.h"
 #include "swapchain.h"
@@ -30,6 +31,8 @@ typedef struct demo {
     /* toggles */
     tv_eye_mode mode;
     bool viewcell, frozen, help, hud, shot_requested, resize;
+    bool overview;  /* right half: Figure 1 overview of the head, its PVS and viewcell */
+    uint8_t* seen;  /* overview: triangles both eyes' full renders show this frame */
     /* statistics */
     uint64_t frame, misses, check_frame;
     bool inside, have_check;
@@ -80,6 +83,7 @@ static bool handle_actions(demo* m)
         switch (a) {
         case TV_ACTION_TOGGLE_PVS: m->mode = m->mode == TV_EYE_PVS ? TV_EYE_FULL : TV_EYE_PVS; break;
         case TV_ACTION_CYCLE_COLOUR: m->mode = m->mode == TV_EYE_FN ? TV_EYE_PVS : TV_EYE_FN; break;
+        case TV_ACTION_TOGGLE_OVERVIEW: m->overview = !m->overview; break;
         case TV_ACTION_TOGGLE_VIEWCELL: m->viewcell = !m->viewcell; break;
         case TV_ACTION_TOGGLE_FREEZE: m->frozen = !m->frozen; break;
         case TV_ACTION_SCREENSHOT: take_screenshot(m); break;
@@ -116,29 +120,66 @@ static void steer(demo* m, double t, double dt)
         tv_head_step(&m->head, &in, dt);
 }
 
-/* Both eyes of the latched head into the mirror image. */
+static void copy_to_mirror(demo* m, int half)
+{
+    const tv_demo_desc* d = m->d;
+    for (uint32_t y = 0; y < d->height; y++)
+        memcpy(m->mirror + ((size_t)y * m->mirror_w + (size_t)half * d->width) * 4,
+               m->eye.rgba + (size_t)y * d->width * 4, (size_t)d->width * 4);
+}
+
+/* Figure 1 seen from behind and above the head (horizontal heading, world
+ * up, so looking up or down does not tip the overview). */
+static bool render_overview(demo* m, const pred_pose* head)
+{
+    const tv_pvs_result* cur = &m->pvs.current;
+    double f[3], up[3] = {0.0, 1.0, 0.0};
+    pred_pose_forward(head->q, f);
+    double len = hypot(f[0], f[2]);
+    double flat[3] = {len > 1e-6 ? f[0] / len : 0.0, 0.0, len > 1e-6 ? f[2] / len : -1.0};
+    rnd_camera cam;
+    tv_overview_camera(&m->s.scene, head->p, flat, up, &cam);
+    cam.fov_y_deg = m->fov_v_deg;
+    if (!tv_overview_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->seen, m->pvs.mask, m->s.scene.triangle_count))
+        return false;
+    tv_canvas c = {m->eye.rgba, (int)m->d->width, (int)m->d->height};
+    tv_draw_viewcell(&c, &cam, &cur->vc, m->inside ? (const uint8_t[3]){255, 220, 40} : (const uint8_t[3]){255, 60, 40});
+    copy_to_mirror(m, 1);
+    return true;
+}
+
+/* Both eyes of the latched head into the mirror image (the right one
+ * replaced by the overview when it is on). */
 static bool render_eyes(demo* m, const pred_pose* head)
 {
     const tv_demo_desc* d = m->d;
-    bool check = m->frame % (uint64_t)d->check_every == 0;
+    /* the overview's shaded set is what the eyes see now: it needs both full renders every frame */
+    bool check = m->overview || m->frame % (uint64_t)d->check_every == 0;
     pred_pose eyes[2];
     pred_eye_poses(head, d->ipd_m, eyes);
     const tv_pvs_result* cur = &m->pvs.current;
+    uint32_t n = m->s.scene.triangle_count;
+    if (m->overview)
+        memset(m->seen, 0, n ? n : 1);
     m->inside = true;
     for (int e = 0; e < 2; e++) {
         rnd_camera cam = tv_camera_at_pose(&eyes[e], m->fov_v_deg, m->d->near_m, m->d->far_m);
-        if (!tv_eye_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->mode, cur->ids, cur->count, m->pvs.mask,
-                           m->s.scene.triangle_count, check, &m->check[e]))
+        if (!tv_eye_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->mode, cur->ids, cur->count, m->pvs.mask, n, check,
+                           &m->check[e]))
             return false;
         bool in = pred_viewcell_contains(&cur->vc, eyes[e].p, eyes[e].q, d->fov_h_deg, m->fov_v_deg, NULL);
         m->inside = m->inside && in;
+        if (m->overview)
+            tv_mark_seen(&m->eye, m->seen, n);
+        if (m->overview && e == 1)
+            break;
         tv_canvas eye = {m->eye.rgba, (int)d->width, (int)d->height};
         if (m->viewcell)
             tv_draw_viewcell(&eye, &cam, &cur->vc, in ? (const uint8_t[3]){255, 220, 40} : (const uint8_t[3]){255, 60, 40});
-        for (uint32_t y = 0; y < d->height; y++)
-            memcpy(m->mirror + ((size_t)y * m->mirror_w + (size_t)e * d->width) * 4,
-                   m->eye.rgba + (size_t)y * d->width * 4, (size_t)d->width * 4);
+        copy_to_mirror(m, e);
     }
+    if (m->overview && !render_overview(m, head))
+        return false;
     if (check) {
         m->have_check = true;
         m->check_frame = m->frame;
@@ -157,6 +198,7 @@ static void draw_overlays(demo* m, double t)
             .fps = m->frame_ms > 0.0 ? 1e3 / m->frame_ms : 0.0,
             .frame_ms = m->frame_ms,
             .view = m->mode == TV_EYE_PVS ? "PVS" : m->mode == TV_EYE_FULL ? "FULL" : "FN-red",
+            .overview = m->overview,
             .method = pvs_method_name(m->d->pvs.method.kind),
             .head = m->follow ? "path" : "manual",
             .viewcell_shown = m->viewcell,
@@ -317,8 +359,13 @@ static bool setup(demo* m, char* err, size_t err_size)
     m->mirror_w = 2 * d->width;
     m->mirror_h = d->height;
     m->mirror = calloc((size_t)m->mirror_w * m->mirror_h, 4);
+    m->seen = malloc(m->s.scene.triangle_count ? m->s.scene.triangle_count : 1);
     m->win = tv_window_open("trimvr demo", (int)m->mirror_w, (int)m->mirror_h, err, err_size);
-    if (!m->mirror || !m->win)
+    if (!m->mirror || !m->seen) {
+        snprintf(err, err_size, "out of memory for the mirror image");
+        return false;
+    }
+    if (!m->win)
         return false;
     int fw, fh;
     tv_window_framebuffer(m->win, &fw, &fh);
@@ -343,6 +390,7 @@ static void teardown(demo* m)
     rnd_swapchain_destroy(m->s.ctx, m->sc);
     tv_window_close(m->win);
     free(m->mirror);
+    free(m->seen);
     free(m->shot);
 }
 
@@ -363,6 +411,7 @@ int tv_demo_run(const tv_demo_desc* d)
     m.d = d;
     m.mode = d->mode;
     m.hud = d->hud;
+    m.overview = d->overview;
     m.fov_v_deg = rnd_fov_y_from_x(d->fov_h_deg, (float)d->width / (float)d->height);
     if (d->path && !pred_path_load(d->path, &m.path, err, sizeof err)) {
         fprintf(stderr, "trimvr demo: error: %s\n", err);

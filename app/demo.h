@@ -26,6 +26,7 @@ typedef struct tv_demo_desc {
     bool have_start;         /* false: the scene's bounds centre, 1.7 m above its floor */
     tv_eye_mode mode;        /* initial view */
     bool hud;
+    bool overview;           /* start with the Figure 1 overview in the right half */
     bool mailbox;            /* MAILBOX present mode when offered (else FIFO) */
     int check_every;         /* render the full scene too and compare every Nth frame */
     int frames;              /* > 0: run exactly this many frames on the fixed-step clock, then exit */

@@ -11,6 +11,8 @@ const char tv_demo_controls[] =
     "T  follow the path again (movement keys take over)\n"
     "P  render PVS / full scene            C  colour: off / false negatives red\n"
     "V  show the viewcell (double cone)    F  freeze the PVS (no new requests)\n"
+    "O  overview: right half from behind and above, Figure 1 colours\n"
+    "   (seen now: shaded, rest of the PVS: blue, culled: grey)\n"
     "U  HUD on/off    H / F1  this help    F12  screenshot (PNG)    Esc  quit";
 
 static const uint8_t k_text[3] = {235, 235, 235};
@@ -27,13 +29,13 @@ void tv_hud_draw(const tv_canvas* c, const tv_hud_info* in, int scale)
         snprintf(check, sizeof check, "check: none yet (every %d frames)", in->check_every);
     char text[1024];
     snprintf(text, sizeof text,
-             "%.1f fps (%.0f ms)  view %s  head %s %.1f m/s%s%s\n"
+             "%.1f fps (%.0f ms)  view %s%s  head %s %.1f m/s%s%s\n"
              "PVS #%u (%s): age %.0f ms, compute %.0f ms\n"
              "delta %.3f m  PVS FOV %.1f deg  PVS %.1f%% of %u tris\n"
              "%s\n"
              "viewcell misses %llu / %llu frames  now %s\n"
              "H: help",
-             in->fps, in->frame_ms, in->view, in->head, in->speed, in->frozen ? "  FROZEN" : "",
+             in->fps, in->frame_ms, in->view, in->overview ? " + overview" : "", in->head, in->speed, in->frozen ? "  FROZEN" : "",
              in->viewcell_shown ? "  viewcell" : "", in->pvs_id, in->method, in->pvs_age_ms, in->pvs_compute_ms,
              in->delta_m, in->fov_pvs_deg, in->scene_tris ? 100.0 * in->pvs_tris / in->scene_tris : 0.0,
              in->scene_tris, check, (unsigned long long)in->misses, (unsigned long long)in->frames,

@@ -14,6 +14,7 @@ extern const char tv_demo_controls[];
 typedef struct tv_hud_info {
     double fps, frame_ms;
     const char* view;       /* "PVS", "FULL" or "FN" (colour) */
+    bool overview;          /* the right half shows the Figure 1 overview */
     const char* method;
     const char* head;       /* "path" or "manual" */
     bool viewcell_shown, frozen;

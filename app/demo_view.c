@@ -38,19 +38,6 @@ void tv_eye_renderer_free(tv_eye_renderer* r, rnd_context* ctx)
     memset(r, 0, sizeof *r);
 }
 
-/* Figure 1's red, blended so the surface stays recognisable. */
-static void paint_false_negatives(uint8_t* rgba, const uint32_t* ids, size_t pixels, const uint8_t* mask,
-                                  uint32_t triangle_count)
-{
-    for (size_t i = 0; i < pixels; i++)
-        if (ids[i] < triangle_count && !mask[ids[i]]) {
-            uint8_t* p = rgba + 4 * i;
-            p[0] = (uint8_t)(200 + p[0] / 5);
-            p[1] = (uint8_t)(p[1] / 4);
-            p[2] = (uint8_t)(p[2] / 4);
-        }
-}
-
 bool tv_eye_render(tv_eye_renderer* r, rnd_context* ctx, const rnd_gpu_scene* gpu, const rnd_camera* cam,
                    tv_eye_mode mode, const uint32_t* pvs_ids, uint32_t pvs_count, const uint8_t* pvs_mask,
                    uint32_t triangle_count, bool check, tv_eye_check* out)
@@ -72,7 +59,25 @@ bool tv_eye_render(tv_eye_renderer* r, rnd_context* ctx, const rnd_gpu_scene* gp
     if (mode != TV_EYE_PVS)
         memcpy(r->rgba, r->rgba_full, pixels * 4);
     if (mode == TV_EYE_FN)
-        paint_false_negatives(r->rgba, r->ids, pixels, pvs_mask, triangle_count);
+        rnd_colour_false_negatives(r->rgba, r->ids, pixels, pvs_mask, triangle_count, r->rgba, 4);
+    return true;
+}
+
+void tv_mark_seen(const tv_eye_renderer* r, uint8_t* seen, uint32_t triangle_count)
+{
+    size_t pixels = (size_t)r->width * r->height;
+    for (size_t i = 0; i < pixels; i++)
+        if (r->ids[i] < triangle_count)
+            seen[r->ids[i]] = 1;
+}
+
+bool tv_overview_render(tv_eye_renderer* r, rnd_context* ctx, const rnd_gpu_scene* gpu, const rnd_camera* cam,
+                        const uint8_t* seen, const uint8_t* pvs_mask, uint32_t triangle_count)
+{
+    if (!rnd_draw(ctx, r->target, gpu, cam, NULL, 0, NULL) || !rnd_target_read_color(ctx, r->target, r->rgba) ||
+        !rnd_target_read_ids(ctx, r->target, r->ids))
+        return false;
+    rnd_colour_figure1(r->rgba, r->ids, (size_t)r->width * r->height, seen, pvs_mask, triangle_count, r->rgba, 4);
     return true;
 }
 

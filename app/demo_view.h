@@ -44,6 +44,16 @@ bool tv_eye_render(tv_eye_renderer* r, rnd_context* ctx, const rnd_gpu_scene* gp
                    tv_eye_mode mode, const uint32_t* pvs_ids, uint32_t pvs_count, const uint8_t* pvs_mask,
                    uint32_t triangle_count, bool check, tv_eye_check* out);
 
+/* Marks the triangles of r's last full render (its id buffer, filled by a
+ * check or the FN view) in `seen` (triangle_count bytes). */
+void tv_mark_seen(const tv_eye_renderer* r, uint8_t* seen, uint32_t triangle_count);
+
+/* The overview in the paper's Figure 1 colours: the full scene from cam
+ * (tv_overview_camera) with the triangles the eyes see now (`seen`) shaded,
+ * the rest of the PVS blue, everything else grey, into r->rgba. */
+bool tv_overview_render(tv_eye_renderer* r, rnd_context* ctx, const rnd_gpu_scene* gpu, const rnd_camera* cam,
+                        const uint8_t* seen, const uint8_t* pvs_mask, uint32_t triangle_count);
+
 /* Draws the double cone's outline (base circle, and generators from it to
  * both apexes) as seen by cam into an eye image. */
 void tv_draw_viewcell(const tv_canvas* eye, const rnd_camera* cam, const pred_viewcell* vc, const uint8_t rgb[3]);

@@ -62,6 +62,7 @@ static tv_action action_of_key(int key)
     case GLFW_KEY_P: return TV_ACTION_TOGGLE_PVS;
     case GLFW_KEY_C: return TV_ACTION_CYCLE_COLOUR;
     case GLFW_KEY_V: return TV_ACTION_TOGGLE_VIEWCELL;
+    case GLFW_KEY_O: return TV_ACTION_TOGGLE_OVERVIEW;
     case GLFW_KEY_F: return TV_ACTION_TOGGLE_FREEZE;
     case GLFW_KEY_F12: return TV_ACTION_SCREENSHOT;
     case GLFW_KEY_H:

@@ -16,6 +16,7 @@ typedef enum tv_action {
     TV_ACTION_TOGGLE_PVS,      /* P */
     TV_ACTION_CYCLE_COLOUR,    /* C */
     TV_ACTION_TOGGLE_VIEWCELL, /* V */
+    TV_ACTION_TOGGLE_OVERVIEW, /* O */
     TV_ACTION_TOGGLE_FREEZE,   /* F */
     TV_ACTION_SCREENSHOT,      /* F12 */
     TV_ACTION_TOGGLE_HELP,     /* H, F1 */

@@ -21,6 +21,10 @@ test -n "$fov_v"
 last=$(printf '%05d' $((N - 1)))
 "$CHECK" "$OUT/demo.png" "$OUT/ref/frame_${last}_left.png" "$OUT/ref/frame_${last}_right.png" \
     "$OUT/ref/frame_00000_left.png"
+# the Figure 1 overview replaces the right eye; the left one stays the eye
+xvfb-run -a "$TRIMVR" demo --path "$SRC/paths/interior-walk.csv" --res 320x180 --frames $N --view full --no-hud \
+    --overview --screenshot "$OUT/overview.png" >/dev/null
+"$CHECK" --overview "$OUT/overview.png" "$OUT/ref/frame_${last}_left.png"
 # the default view (PVS, HUD on) must also run and exit 0
 xvfb-run -a "$TRIMVR" demo --path "$SRC/paths/interior-walk.csv" --res 320x180 --frames 6 --every 2 \
     --screenshot "$OUT/demo-pvs.png" | grep -q "viewcell misses"

@@ -45,10 +45,53 @@ static double spread(const uint8_t* rgba, size_t pixels)
     return sqrt(sq / pixels - mean * mean);
 }
 
+/* Share of pixels in Figure 1's blue (false positives) and grey (culled). */
+static void figure1_shares(const uint8_t* rgba, size_t pixels, double* blue, double* grey)
+{
+    size_t b = 0, g = 0;
+    for (size_t i = 0; i < pixels; i++) {
+        const uint8_t* p = rgba + 4 * i;
+        b += p[2] > p[0] + 60 && p[2] > p[1] + 30;
+        g += p[0] == p[1] && p[1] == p[2] && p[0] >= 40 && p[0] <= 104;
+    }
+    *blue = (double)b / (double)pixels;
+    *grey = (double)g / (double)pixels;
+}
+
+/* --overview SHOT LEFT: the left half is the left eye, the right half the
+ * Figure 1 overview, which must show false positives (blue) and culled
+ * triangles (grey) beside shaded ones. */
+static int check_overview(const char* shot_file, const char* left_file)
+{
+    uint32_t sw, sh, w, h;
+    uint8_t* shot = load(shot_file, &sw, &sh);
+    uint8_t* left = load(left_file, &w, &h);
+    TV_CHECK(shot && left && sw == 2 * w && sh == h);
+    if (!shot || !left || sw != 2 * w || sh != h)
+        return tv_test_finish();
+    size_t pixels = (size_t)w * h;
+    uint8_t* eye[2] = {half(shot, w, h, 0), half(shot, w, h, 1)};
+    double psnr = rnd_psnr_rgb8(eye[0], left, pixels, 4), blue, grey, eye_blue, eye_grey;
+    figure1_shares(eye[1], pixels, &blue, &grey);
+    figure1_shares(eye[0], pixels, &eye_blue, &eye_grey);
+    printf("overview %ux%u: left eye %.1f dB; overview blue %.1f%%, grey %.1f%% (left eye: %.1f%%, %.1f%%)\n", sw,
+           sh, psnr, 100.0 * blue, 100.0 * grey, 100.0 * eye_blue, 100.0 * eye_grey);
+    TV_CHECK(psnr >= MATCH_DB);
+    TV_CHECK(blue > 0.01 && grey > 0.01 && blue + grey < 0.99); /* all three classes on screen */
+    TV_CHECK(eye_blue < 0.005);                                 /* the eye itself is not recoloured */
+    free(eye[0]);
+    free(eye[1]);
+    scn_image_free(left);
+    scn_image_free(shot);
+    return tv_test_finish();
+}
+
 int main(int argc, char** argv)
 {
+    if (argc == 4 && strcmp(argv[1], "--overview") == 0)
+        return check_overview(argv[2], argv[3]);
     if (argc != 5) {
-        fprintf(stderr, "usage: demo_shot_check SHOT LEFT RIGHT WRONG\n");
+        fprintf(stderr, "usage: demo_shot_check SHOT LEFT RIGHT WRONG | --overview SHOT LEFT\n");
         return 2;
     }
     uint32_t sw, sh, w[3], h[3];
