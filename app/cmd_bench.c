@@ -54,15 +54,6 @@ typedef struct bench_run {
     bool cells_printed; /* this scene's viewcells were listed */
 } bench_run;
 
-/* <level>.pvs.json next to an OpenArena level's .gltf. */
-static void pvs_json_of(const char* spec, char* buf, size_t size)
-{
-    tv_resolve_scene_spec(spec, buf, size - 16);
-    char* dot = strrchr(buf, '.');
-    if (dot)
-        strcpy(dot, ".pvs.json");
-}
-
 /* The viewcells of one scene at radius delta: --pos if given, else the
  * scene's bundled walk (builtin:NAME and sponza: paths/NAME-walk.csv), else
  * floor points of an OpenArena level. -1 with a message when it has none. */
@@ -81,7 +72,7 @@ static int scene_cells(const bench_run* b, const char* spec, const tv_app_scene*
     }
     if (strncmp(spec, "oa:", 3) == 0) {
         char json[4200];
-        pvs_json_of(spec, json, sizeof json);
+        tv_eval_pvs_json_of(spec, json, sizeof json);
         float pos[3 * MAX_LIST], dir[3 * MAX_LIST];
         int want = o->max_cells > 0 && o->max_cells < MAX_LIST ? o->max_cells : MAX_LIST;
         int n = tv_eval_floor_points(&s->scene, json, want, pos, dir, err, sizeof err);
@@ -146,7 +137,7 @@ static bool bench_method(bench_run* b, const char* spec, const tv_app_scene* s, 
 {
     const bench_opts* o = b->o;
     char err[512], json[4200], t[32];
-    pvs_json_of(spec, json, sizeof json);
+    tv_eval_pvs_json_of(spec, json, sizeof json);
     pvs_method_desc md = {.kind = kind, .tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k},
                           .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples,
                           .q3vis_file = kind == PVS_METHOD_Q3VIS ? json : NULL};

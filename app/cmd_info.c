@@ -5,10 +5,12 @@
 #include "args.h"
 #include "clock.h"
 #include "commands.h"
+#include "eval_common.h"
 #include "weld.h"
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static bool print_edge_classes(const scn_scene* sc)
 {
@@ -41,13 +43,38 @@ static bool print_edge_classes(const scn_scene* sc)
     return true;
 }
 
+static bool print_floor_points(const char* spec, const scn_scene* sc, int max_points)
+{
+    if (strncmp(spec, "oa:", 3) != 0) {
+        fprintf(stderr, "trimvr info: error: --floor-points needs an OpenArena level (oa:LEVEL), got %s\n", spec);
+        return false;
+    }
+    char json[4200], err[512];
+    tv_eval_pvs_json_of(spec, json, sizeof json);
+    float* pos = malloc((size_t)max_points * 3 * sizeof *pos);
+    float* dir = malloc((size_t)max_points * 3 * sizeof *dir);
+    int n = pos && dir ? tv_eval_floor_points(sc, json, max_points, pos, dir, err, sizeof err) : -1;
+    if (n < 0)
+        fprintf(stderr, "trimvr info: error: %s\n", pos && dir ? err : "out of memory for floor points");
+    for (int i = 0; i < n; i++)
+        printf("floor point %-4d  eye %.2f,%.2f,%.2f  facing %.2f,%.2f,%.2f\n", i, pos[3 * i], pos[3 * i + 1],
+               pos[3 * i + 2], dir[3 * i], dir[3 * i + 1], dir[3 * i + 2]);
+    free(pos);
+    free(dir);
+    return n >= 0;
+}
+
 int tv_cmd_info(int argc, char** argv)
 {
     const char* spec = NULL;
     bool edges = false;
+    int floor_points = 0;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &spec, "S", "scene: .gltf/.glb, builtin:NAME, sponza or oa:LEVEL (required)"},
         {"edges", TV_ARG_FLAG, &edges, NULL, "also weld vertices and classify triangle edges"},
+        {"floor-points", TV_ARG_INT, &floor_points, "N",
+         "oa: levels: print up to N eye positions 1.4 m above open floor (trimvr bench's viewcells; anchors for "
+         "placing traces)"},
     };
     tv_args_result r = tv_args_parse("info", "Loads a scene (no GPU needed) and prints its statistics.", args,
                                      (int)(sizeof args / sizeof args[0]), argc, argv);
@@ -77,6 +104,8 @@ int tv_cmd_info(int argc, char** argv)
            sc.bounds_min[2], sc.bounds_max[0], sc.bounds_max[1], sc.bounds_max[2]);
     printf("load time         %.1f ms\n", ms);
     bool ok = !edges || print_edge_classes(&sc);
+    if (ok && floor_points > 0)
+        ok = print_floor_points(spec, &sc, floor_points);
     scn_scene_free(&sc);
     return ok ? 0 : 1;
 }

@@ -84,6 +84,14 @@ static int by_area_desc(const void* a, const void* b)
     return (x < y) - (x > y);
 }
 
+void tv_eval_pvs_json_of(const char* spec, char* buf, size_t size)
+{
+    tv_resolve_scene_spec(spec, buf, size - 16);
+    char* dot = strrchr(buf, '.');
+    if (dot)
+        strcpy(dot, ".pvs.json");
+}
+
 int tv_eval_floor_points(const scn_scene* scene, const char* pvs_json, int max_cells, float* pos, float* dir,
                          char* err, size_t err_size)
 {

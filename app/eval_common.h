@@ -38,6 +38,9 @@ int tv_eval_path_cells(const char* file, int every, int max_cells, float delta, 
  * horizontally towards the level's bounding-box centre. Writes pos[3 * i],
  * dir[3 * i]. Returns the count (0 when the level has no such point), -1 on
  * a bad file. */
+/* <level>.pvs.json next to an OpenArena level's .gltf, from a scene spec. */
+void tv_eval_pvs_json_of(const char* spec, char* buf, size_t size);
+
 int tv_eval_floor_points(const scn_scene* scene, const char* pvs_json, int max_cells, float* pos, float* dir,
                          char* err, size_t err_size);
 
