@@ -188,6 +188,8 @@ static uint32_t fn_bound(double fraction)
  * distant ground strips) decide some eye pixels differently from every PVS
  * pixel centre (docs/trim-regions.md, "GPU passes", has the numbers). */
 #define FN_CITY 0.01
+/* Sub-pixel slivers in a constructed scene (test_small_opening_at_view_edge). */
+#define FN_SLIVER 0.001
 
 static pvs_viewcell viewcell(float x, float y, float z, float delta)
 {
@@ -419,6 +421,103 @@ static void test_alpha_masked_hole(void)
     fixture_close(&f);
 }
 
+/* ---- constructed occluder configurations (issue: known answers) ---- */
+
+/* A box as a soup, returning its first triangle id (12 triangles). */
+static uint32_t add_box(scn_scene* s, float x0, float y0, float z0, float x1, float y1, float z1, uint32_t m)
+{
+    uint32_t first = s->triangle_count;
+    soup_box(s, (float[3]){x0, y0, z0}, (float[3]){x1, y1, z1}, m);
+    return first;
+}
+
+/* Computes the PVS of a small viewcell at the origin looking down -Z and
+ * checks the known answer: every box in `hidden` culled, every one in
+ * `visible` kept, and no false-negative pixel from the apex or anywhere on
+ * the double cone. */
+static void check_configuration(fixture* f, const char* what, float delta, double fn_fraction, const uint32_t* hidden,
+                                int n_hidden, const uint32_t* visible, int n_visible)
+{
+    printf("  %s\n", what);
+    scn_scene_update_bounds(&f->scene);
+    fixture_open(f, 0);
+    pvs_result r;
+    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, delta);
+    TV_CHECK(compute(f, &vc, &r));
+    for (int i = 0; i < n_hidden; i++)
+        TV_CHECK(count_in_range(&r, hidden[i], 12) == 0);
+    for (int i = 0; i < n_visible; i++)
+        TV_CHECK(count_in_range(&r, visible[i], 12) > 0);
+    TV_CHECK(apex_fn(f, &r, &vc) == 0);
+    uint32_t at_v0, worst = cone_fn(f, &r, &vc, &at_v0);
+    printf("  FN pixels: %u at v0 (3 renders), worst cone sample %u\n", at_v0, worst);
+    TV_CHECK(at_v0 == 0 && worst <= fn_bound(fn_fraction));
+    fixture_close(f);
+}
+
+/* Two boxes crossing each other (a plus sign seen from above): the union
+ * occludes, although neither's silhouette is an edge of the union. */
+static void test_interpenetrating_occluders(void)
+{
+    fixture f = {0};
+    fx_scene_init(&f.scene, 64, 1);
+    uint32_t m = fx_material(&f.scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+    add_box(&f.scene, -3.0f, -2.0f, -6.2f, 3.0f, 2.0f, -6.0f, m);
+    add_box(&f.scene, -0.2f, -2.5f, -7.5f, 0.2f, 2.5f, -4.5f, m);
+    uint32_t hidden = add_box(&f.scene, -0.5f, -0.5f, -12.0f, 0.5f, 0.5f, -11.0f, m);
+    check_configuration(&f, "interpenetrating occluders", 0.05f, FN_SIMPLE, &hidden, 1, NULL, 0);
+}
+
+/* A 1 cm thick wall: its front and back faces are one pixel-width apart in
+ * depth, so the occlusion interval between them is very short. */
+static void test_thin_walls(void)
+{
+    fixture f = {0};
+    fx_scene_init(&f.scene, 64, 1);
+    uint32_t m = fx_material(&f.scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+    add_box(&f.scene, -3.0f, -2.0f, -6.01f, 3.0f, 2.0f, -6.0f, m);
+    uint32_t hidden = add_box(&f.scene, -0.5f, -0.5f, -12.0f, 0.5f, 0.5f, -11.0f, m);
+    uint32_t beside = add_box(&f.scene, 6.5f, -0.5f, -12.0f, 7.5f, 0.5f, -11.0f, m); /* past the wall's edge */
+    check_configuration(&f, "thin (1 cm) wall", 0.05f, FN_SIMPLE, &hidden, 1, &beside, 1);
+}
+
+/* Consecutive occluders (the paper's figure 5): a box in the first wall's
+ * umbra, and one in the umbra of both. */
+static void test_umbra_inside_umbra(void)
+{
+    fixture f = {0};
+    fx_scene_init(&f.scene, 64, 1);
+    uint32_t m = fx_material(&f.scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+    add_box(&f.scene, -2.0f, -1.5f, -4.2f, 2.0f, 1.5f, -4.0f, m);
+    add_box(&f.scene, -5.0f, -3.0f, -8.2f, 5.0f, 3.0f, -8.0f, m);
+    uint32_t hidden[2] = {add_box(&f.scene, -0.4f, -0.4f, -6.5f, 0.4f, 0.4f, -5.7f, m),
+                          add_box(&f.scene, -1.0f, -1.0f, -12.0f, 1.0f, 1.0f, -11.0f, m)};
+    check_configuration(&f, "umbra inside an umbra", 0.1f, FN_SIMPLE, hidden, 2, NULL, 0);
+}
+
+/* A 0.2 m square hole near the edge of the 60-degree target view (which
+ * ends at x = 1.73 at this depth): the box seen through it must be kept,
+ * one behind the solid part culled. The hole's 5 cm side walls are seen
+ * from the cone's rear apex at about 0.03 degrees, a sliver thinner than
+ * any pixel: an eye render's pixel centres may land on it where the PVS
+ * raster's (0.5 degrees apart) do not (measured: 9 pixels in one cone
+ * sample, none from v0 or the apex), hence FN_SLIVER. */
+static void test_small_opening_at_view_edge(void)
+{
+    fixture f = {0};
+    fx_scene_init(&f.scene, 64, 1);
+    uint32_t m = fx_material(&f.scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+    /* a 5 cm slab around the hole, as four boxes */
+    const float z0 = -3.05f, z1 = -3.0f, hx0 = 1.4f, hx1 = 1.6f, hy0 = -0.1f, hy1 = 0.1f;
+    add_box(&f.scene, -6.0f, -4.0f, z0, hx0, 4.0f, z1, m); /* left of the hole */
+    add_box(&f.scene, hx1, -4.0f, z0, 6.0f, 4.0f, z1, m);  /* right of it */
+    add_box(&f.scene, hx0, hy1, z0, hx1, 4.0f, z1, m);     /* above */
+    add_box(&f.scene, hx0, -4.0f, z0, hx1, hy0, z1, m);    /* below */
+    uint32_t through = add_box(&f.scene, 2.7f, -0.3f, -6.3f, 3.3f, 0.3f, -5.7f, m);
+    uint32_t hidden = add_box(&f.scene, -3.3f, -0.3f, -6.3f, -2.7f, 0.3f, -5.7f, m);
+    check_configuration(&f, "small opening at the edge of the view", 0.05f, FN_SLIVER, &hidden, 1, &through, 1);
+}
+
 /* ---- k = 1: overflow is counted and loses nothing ---- */
 
 static void test_tiny_k_overflow(void)
@@ -503,6 +602,10 @@ int main(void)
     TV_TEST_RUN(test_unit_wall_hides_box);
     TV_TEST_RUN(test_soup_nonmanifold);
     TV_TEST_RUN(test_alpha_masked_hole);
+    TV_TEST_RUN(test_interpenetrating_occluders);
+    TV_TEST_RUN(test_thin_walls);
+    TV_TEST_RUN(test_umbra_inside_umbra);
+    TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_tiny_k_overflow);
     TV_TEST_RUN(test_city_no_false_negatives);
     TV_TEST_RUN(test_worker_thread);
