@@ -71,24 +71,29 @@ static bool _parse_row(char* line, const int* field_col, int field_count, double
     return true;
 }
 
-static bool _push_pose(pred_path* out, size_t* cap, const double* v)
+bool pred_path_append(pred_path* path, size_t* capacity, const pred_pose* pose)
 {
-    if (out->count == *cap) {
-        size_t grown_cap = *cap ? *cap * 2 : 1024;
-        pred_pose* grown = realloc(out->poses, grown_cap * sizeof *grown);
+    if (path->count == *capacity) {
+        size_t grown_cap = *capacity ? *capacity * 2 : 1024;
+        pred_pose* grown = realloc(path->poses, grown_cap * sizeof *grown);
         if (!grown)
             return false;
-        out->poses = grown;
-        *cap = grown_cap;
+        path->poses = grown;
+        *capacity = grown_cap;
     }
-    pred_pose* p = &out->poses[out->count++];
-    p->t = v[COL_T];
-    for (int i = 0; i < 3; i++)
-        p->p[i] = v[COL_PX + i];
-    for (int i = 0; i < 4; i++)
-        p->q[i] = v[COL_QX + i];
-    pred_quat_normalize(p->q);
+    path->poses[path->count++] = *pose;
     return true;
+}
+
+static bool _push_pose(pred_path* out, size_t* cap, const double* v)
+{
+    pred_pose p = {.t = v[COL_T]};
+    for (int i = 0; i < 3; i++)
+        p.p[i] = v[COL_PX + i];
+    for (int i = 0; i < 4; i++)
+        p.q[i] = v[COL_QX + i];
+    pred_quat_normalize(p.q);
+    return pred_path_append(out, cap, &p);
 }
 
 static bool _parse(char* text, pred_path* out, const char* file, char* err, size_t err_size)

@@ -40,6 +40,11 @@ bool pred_path_save(const pred_path* path, const char* file, const char* extra_c
 /* Releases the poses and zeroes the path. Safe on a zeroed path. */
 void pred_path_free(pred_path* path);
 
+/* Appends a pose, growing path->poses geometrically; *capacity is the
+ * allocated count (0 for a path not yet allocated). False when out of
+ * memory (the path is left as it was). */
+bool pred_path_append(pred_path* path, size_t* capacity, const pred_pose* pose);
+
 /* Pose at time t: position lerp and shortest-arc slerp between the two
  * surrounding samples, clamped to the first/last sample outside the path's
  * time span; out->t = t. O(log n). Requires path->count >= 1. */

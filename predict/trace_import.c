@@ -103,20 +103,6 @@ static void _to_trimvr_frame(pred_trace_format f, pred_pose* p)
     }
 }
 
-static bool _push(pred_path* out, size_t* cap, const pred_pose* pose)
-{
-    if (out->count == *cap) {
-        size_t grown_cap = *cap ? *cap * 2 : 1024;
-        pred_pose* grown = realloc(out->poses, grown_cap * sizeof *grown);
-        if (!grown)
-            return false;
-        out->poses = grown;
-        *cap = grown_cap;
-    }
-    out->poses[out->count++] = *pose;
-    return true;
-}
-
 typedef struct import_state {
     const char* file;
     pred_trace_format format;
@@ -194,7 +180,7 @@ static bool _row(import_state* st, char* line, size_t line_no, pred_path* out, p
         return true;
     }
     _to_trimvr_frame(st->format, &pose);
-    if (!_push(out, &st->cap, &pose))
+    if (!pred_path_append(out, &st->cap, &pose))
         return pred_text_fail(err, err_size, st->file, line_no, "out of memory");
     return true;
 }

@@ -431,6 +431,13 @@ static uint32_t add_box(scn_scene* s, float x0, float y0, float z0, float x1, fl
     return first;
 }
 
+/* An empty scene with room for a few boxes; returns its grey material. */
+static uint32_t constructed_scene(fixture* f)
+{
+    fx_scene_init(&f->scene, 64, 1);
+    return fx_material(&f->scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+}
+
 /* Computes the PVS of a small viewcell at the origin looking down -Z and
  * checks the known answer: every box in `hidden` culled, every one in
  * `visible` kept, and no false-negative pixel from the apex or anywhere on
@@ -460,8 +467,7 @@ static void check_configuration(fixture* f, const char* what, float delta, doubl
 static void test_interpenetrating_occluders(void)
 {
     fixture f = {0};
-    fx_scene_init(&f.scene, 64, 1);
-    uint32_t m = fx_material(&f.scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+    uint32_t m = constructed_scene(&f);
     add_box(&f.scene, -3.0f, -2.0f, -6.2f, 3.0f, 2.0f, -6.0f, m);
     add_box(&f.scene, -0.2f, -2.5f, -7.5f, 0.2f, 2.5f, -4.5f, m);
     uint32_t hidden = add_box(&f.scene, -0.5f, -0.5f, -12.0f, 0.5f, 0.5f, -11.0f, m);
@@ -473,8 +479,7 @@ static void test_interpenetrating_occluders(void)
 static void test_thin_walls(void)
 {
     fixture f = {0};
-    fx_scene_init(&f.scene, 64, 1);
-    uint32_t m = fx_material(&f.scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+    uint32_t m = constructed_scene(&f);
     add_box(&f.scene, -3.0f, -2.0f, -6.01f, 3.0f, 2.0f, -6.0f, m);
     uint32_t hidden = add_box(&f.scene, -0.5f, -0.5f, -12.0f, 0.5f, 0.5f, -11.0f, m);
     uint32_t beside = add_box(&f.scene, 6.5f, -0.5f, -12.0f, 7.5f, 0.5f, -11.0f, m); /* past the wall's edge */
@@ -486,8 +491,7 @@ static void test_thin_walls(void)
 static void test_umbra_inside_umbra(void)
 {
     fixture f = {0};
-    fx_scene_init(&f.scene, 64, 1);
-    uint32_t m = fx_material(&f.scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+    uint32_t m = constructed_scene(&f);
     add_box(&f.scene, -2.0f, -1.5f, -4.2f, 2.0f, 1.5f, -4.0f, m);
     add_box(&f.scene, -5.0f, -3.0f, -8.2f, 5.0f, 3.0f, -8.0f, m);
     uint32_t hidden[2] = {add_box(&f.scene, -0.4f, -0.4f, -6.5f, 0.4f, 0.4f, -5.7f, m),
@@ -505,8 +509,7 @@ static void test_umbra_inside_umbra(void)
 static void test_small_opening_at_view_edge(void)
 {
     fixture f = {0};
-    fx_scene_init(&f.scene, 64, 1);
-    uint32_t m = fx_material(&f.scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+    uint32_t m = constructed_scene(&f);
     /* a 5 cm slab around the hole, as four boxes */
     const float z0 = -3.05f, z1 = -3.0f, hx0 = 1.4f, hx1 = 1.6f, hy0 = -0.1f, hy1 = 0.1f;
     add_box(&f.scene, -6.0f, -4.0f, z0, hx0, 4.0f, z1, m); /* left of the hole */
