@@ -27,9 +27,10 @@ static bool host_visible(uint32_t binding)
 static bool create_buffer(pvs_context* ctx, uint32_t binding, VkDeviceSize size, char* err, size_t err_size)
 {
     if (size > ctx->rnd->props.limits.maxStorageBufferRange) {
-        snprintf(err, err_size,
-                 "pvs: buffer %u needs %llu bytes, over maxStorageBufferRange %u (lower the resolution or k)",
-                 binding, (unsigned long long)size, ctx->rnd->props.limits.maxStorageBufferRange);
+        bool kbuffer = binding >= TV_PVS_BIND_KFRONT && binding <= TV_PVS_BIND_KUMBRA;
+        snprintf(err, err_size, "pvs: buffer %u needs %llu bytes, over maxStorageBufferRange %u (lower the PVS resolution%s)",
+                 binding, (unsigned long long)size, ctx->rnd->props.limits.maxStorageBufferRange,
+                 kbuffer ? " or k" : "");
         return false;
     }
     VkBufferUsageFlags usage = storage;
