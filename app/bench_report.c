@@ -1,5 +1,7 @@
 #include "bench_report.h"
 
+#include "replay_plots.h"
+
 #include "log.h"
 
 #include <math.h>
@@ -205,15 +207,10 @@ static void plot_methods(FILE* f, const tv_bench_row* rows, int first, int end, 
 
 void tv_bench_plots(const char* dir, const tv_bench_row* rows, int n)
 {
-    char script[4200];
-    snprintf(script, sizeof script, "%s/bench.gp", dir);
-    FILE* f = fopen(script, "w");
-    if (!f) {
-        tv_log(TV_LOG_WARN, "%s: cannot write the plot script", script);
+    FILE* f = tv_gnuplot_begin(dir, "bench.gp", "trimvr bench");
+    if (!f)
         return;
-    }
-    fprintf(f, "# gnuplot script written by trimvr bench; run: gnuplot bench.gp (in this folder)\n"
-               "set terminal pngcairo size 700,420 font ',10'\nset datafile separator ','\n"
+    fprintf(f, "set terminal pngcairo size 700,420 font ',10'\nset datafile separator ','\n"
                "set key outside right\nset grid\nset xlabel 'Δ (cm)'\ncsv = 'bench.csv'\n"
                "pos(x) = x > 0 ? x : 1/0\n");
     for (int first = 0; first < n;) {
@@ -254,10 +251,5 @@ void tv_bench_plots(const char* dir, const tv_bench_row* rows, int n)
         fprintf(f, "unset logscale y\nunset title\n");
         first = end;
     }
-    fclose(f);
-    char cmd[8600];
-    snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot bench.gp 2>/dev/null", dir);
-    if (system(cmd) != 0)
-        tv_log(TV_LOG_WARN, "gnuplot failed or is not installed: no plots (run scripts/setup.sh); bench.csv, "
-                            "bench.json and bench.md are complete");
+    tv_gnuplot_finish(f, dir, "bench.gp", "bench.csv, bench.json and bench.md");
 }

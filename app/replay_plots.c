@@ -97,17 +97,34 @@ enum { COL_T = 2, COL_POSE_AGE = 11, COL_PRED_POS = 19, COL_PRED_ROT = 20, COL_D
        COL_INSIDE = 26, COL_PVS_FRACTION = 29, COL_PSNR = 30, COL_FN = 31, COL_PVS_MS = 33,
        COL_RENDER_PVS = 34, COL_RENDER_FULL = 35 };
 
-void tv_replay_plots(const char* dir)
+FILE* tv_gnuplot_begin(const char* dir, const char* name, const char* writer)
 {
     char script[4200];
-    snprintf(script, sizeof script, "%s/plots.gp", dir);
+    snprintf(script, sizeof script, "%s/%s", dir, name);
     FILE* f = fopen(script, "w");
-    if (!f) {
+    if (!f)
         tv_log(TV_LOG_WARN, "%s: cannot write the plot script", script);
+    else
+        fprintf(f, "# gnuplot script written by %s; run: gnuplot %s (in this folder)\n", writer, name);
+    return f;
+}
+
+void tv_gnuplot_finish(FILE* f, const char* dir, const char* name, const char* kept)
+{
+    fclose(f);
+    char cmd[8600];
+    snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot %s 2>/dev/null", dir, name);
+    if (system(cmd) != 0)
+        tv_log(TV_LOG_WARN, "gnuplot failed or is not installed: no plots (run scripts/setup.sh); %s are complete",
+               kept);
+}
+
+void tv_replay_plots(const char* dir)
+{
+    FILE* f = tv_gnuplot_begin(dir, "plots.gp", "trimvr replay");
+    if (!f)
         return;
-    }
     fprintf(f,
-            "# gnuplot script written by trimvr replay; run: gnuplot plots.gp (in this folder)\n"
             "set terminal pngcairo size 1000,360 font ',10'\n"
             "set datafile separator ','\n"
             "set key top right\nset grid\nset xlabel 'time (s)'\n"
@@ -130,10 +147,5 @@ void tv_replay_plots(const char* dir)
             COL_T, COL_PSNR, COL_PSNR, COL_T, COL_FN, COL_T, COL_INSIDE, COL_FN, COL_T, COL_PVS_FRACTION, COL_T, COL_DELTA,
             COL_T, COL_FOV, COL_T, COL_PRED_POS, COL_T, COL_PRED_ROT, COL_T, COL_PVS_MS, COL_T, COL_RENDER_FULL,
             COL_T, COL_RENDER_PVS, COL_T, COL_POSE_AGE);
-    fclose(f);
-    char cmd[8600];
-    snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot plots.gp 2>/dev/null", dir);
-    if (system(cmd) != 0)
-        tv_log(TV_LOG_WARN, "gnuplot failed or is not installed: no plots (run scripts/setup.sh); frames.csv and "
-                            "summary.json are complete");
+    tv_gnuplot_finish(f, dir, "plots.gp", "frames.csv and summary.json");
 }
