@@ -57,7 +57,7 @@ static bool print_floor_points(const char* spec, const scn_scene* sc, int max_po
     if (n < 0)
         fprintf(stderr, "trimvr info: error: %s\n", pos && dir ? err : "out of memory for floor points");
     for (int i = 0; i < n; i++)
-        printf("floor point %-4d  eye %.2f,%.2f,%.2f  facing %.2f,%.2f,%.2f\n", i, pos[3 * i], pos[3 * i + 1],
+        printf("floor point %-4d  eye %.4f,%.4f,%.4f  facing %.4f,%.4f,%.4f\n", i, pos[3 * i], pos[3 * i + 1],
                pos[3 * i + 2], dir[3 * i], dir[3 * i + 1], dir[3 * i + 2]);
     free(pos);
     free(dir);

@@ -51,6 +51,10 @@
 #define TV_K_TRIM  32
 #define TV_K_UMBRA 32
 #define TV_K_CARRY 16 /* entries one pixel carries from a layer to the next */
+/* The wide visibility pass dilates triangles by half a pixel, clamped to
+ * this many pixels at sharp corners (pvs_face.vert); pvs_face.frag bounds
+ * the dilated plane's depth error with it. */
+#define TV_PVS_MAX_DILATION_PX 3.0
 
 /* Trim-region stencil values (one per pixel, initialised UNTRIMMED). */
 #define TV_STENCIL_UNTRIMMED 0u

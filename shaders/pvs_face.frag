@@ -42,6 +42,9 @@ bool covers_centre()
 
 void main()
 {
+    // How far the dilated plane's depth may stray from the exact one at this
+    // pixel (derivatives need uniform control flow, so before any discard).
+    float w = pvs_depth(), tie_tolerance = (abs(dFdx(w)) + abs(dFdy(w))) * TV_PVS_MAX_DILATION_PX;
     vec4 base = tv_material_color(v_material, v_uv);
     if (tv_alpha_masked(v_material, base.a))
         discard;
@@ -51,8 +54,16 @@ void main()
     if (kind == pc.kind) {
         atomicMin(centre_depth[p], floatBitsToUint(pvs_depth()));
     } else { // the dilated pass, after the exact one
-        if (v_s2.z == 0.0 || covers_centre())
+        if (v_s2.z == 0.0)
             return;
+        if (covers_centre()) {
+            // Tied in depth with the nearest face at this centre (coplanar
+            // faces): the depth test kept one, but an eye's raster may show
+            // either (z-fighting), so both are visible from v*.
+            if (w <= uintBitsToFloat(centre_depth[p]) + tie_tolerance)
+                tri_flags[v_triangle] = 1u;
+            return;
+        }
         // in front of everything covering the centre: visible from v*
         // through part of the pixel
         if (v_far < uintBitsToFloat(centre_depth[p]))

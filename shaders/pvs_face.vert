@@ -22,8 +22,8 @@ layout(location = 4) flat out vec3 v_s2;  // corner 2, orientation (0: not dilat
 layout(location = 5) flat out float v_far; // farthest corner's depth (clip w)
 
 // Dilation is clamped at sharp corners (a full-pixel dilation needs an
-// unbounded offset there); those corners stay slightly under-covered.
-#define PVS_MAX_DILATION_PX 3.0
+// unbounded offset there) to TV_PVS_MAX_DILATION_PX; those corners stay
+// slightly under-covered.
 
 vec2 screen(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * vec2(view.width, view.height); }
 
@@ -53,8 +53,8 @@ void main()
             float hp = 0.5 * (abs(np.x) + abs(np.y)), hn = 0.5 * (abs(nn.x) + abs(nn.y));
             float det = np.x * nn.y - np.y * nn.x;
             vec2 d = abs(det) > 1e-4 ? vec2(hp * nn.y - hn * np.y, np.x * hn - nn.x * hp) / det : np * hp;
-            if (length(d) > PVS_MAX_DILATION_PX)
-                d = normalize(d) * PVS_MAX_DILATION_PX;
+            if (length(d) > TV_PVS_MAX_DILATION_PX)
+                d = normalize(d) * TV_PVS_MAX_DILATION_PX;
             pos.xy += d * 2.0 / vec2(view.width, view.height) * pos.w;
         }
     }
