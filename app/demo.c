@@ -120,6 +120,13 @@ static void steer(demo* m, double t, double dt)
         tv_head_step(&m->head, &in, dt);
 }
 
+/* The viewcell outline: yellow while both eyes are inside it, red when not. */
+static const uint8_t* viewcell_colour(bool inside)
+{
+    static const uint8_t yellow[3] = {255, 220, 40}, red[3] = {255, 60, 40};
+    return inside ? yellow : red;
+}
+
 static void copy_to_mirror(demo* m, int half)
 {
     const tv_demo_desc* d = m->d;
@@ -143,7 +150,7 @@ static bool render_overview(demo* m, const pred_pose* head)
     if (!tv_overview_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->seen, m->pvs.mask, m->s.scene.triangle_count))
         return false;
     tv_canvas c = {m->eye.rgba, (int)m->d->width, (int)m->d->height};
-    tv_draw_viewcell(&c, &cam, &cur->vc, m->inside ? (const uint8_t[3]){255, 220, 40} : (const uint8_t[3]){255, 60, 40});
+    tv_draw_viewcell(&c, &cam, &cur->vc, viewcell_colour(m->inside));
     copy_to_mirror(m, 1);
     return true;
 }
@@ -175,7 +182,7 @@ static bool render_eyes(demo* m, const pred_pose* head)
             break;
         tv_canvas eye = {m->eye.rgba, (int)d->width, (int)d->height};
         if (m->viewcell)
-            tv_draw_viewcell(&eye, &cam, &cur->vc, in ? (const uint8_t[3]){255, 220, 40} : (const uint8_t[3]){255, 60, 40});
+            tv_draw_viewcell(&eye, &cam, &cur->vc, viewcell_colour(in));
         copy_to_mirror(m, e);
     }
     if (m->overview && !render_overview(m, head))

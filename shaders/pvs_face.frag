@@ -42,9 +42,12 @@ bool covers_centre()
 
 void main()
 {
-    // How far the dilated plane's depth may stray from the exact one at this
-    // pixel (derivatives need uniform control flow, so before any discard).
-    float w = pvs_depth(), tie_tolerance = (abs(dFdx(w)) + abs(dFdy(w))) * TV_PVS_MAX_DILATION_PX;
+    // Dilated pass: how far the dilated plane's depth may stray from the
+    // exact one at this pixel (derivatives need uniform control flow, so
+    // before any discard; pc.kind is uniform).
+    float w = pvs_depth(), tie_tolerance = 0.0;
+    if ((pc.kind & TV_PVS_KIND_WIDE) != 0u)
+        tie_tolerance = (abs(dFdx(w)) + abs(dFdy(w))) * TV_PVS_MAX_DILATION_PX;
     vec4 base = tv_material_color(v_material, v_uv);
     if (tv_alpha_masked(v_material, base.a))
         discard;
