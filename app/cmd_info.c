@@ -84,6 +84,10 @@ int tv_cmd_info(int argc, char** argv)
         fprintf(stderr, "trimvr info: error: --scene is required (see trimvr info --help)\n");
         return 2;
     }
+    if (floor_points < 0) {
+        fprintf(stderr, "trimvr info: error: --floor-points: expected a count >= 0, got %d\n", floor_points);
+        return 2;
+    }
     char resolved[4096], err[512];
     if (!tv_resolve_scene_spec(spec, resolved, sizeof resolved)) {
         fprintf(stderr, "trimvr info: error: scene name too long: %s\n", spec);
