@@ -57,9 +57,11 @@ void main()
     if (kind == pc.kind) {
         atomicMin(centre_depth[p], floatBitsToUint(pvs_depth()));
     } else { // the dilated pass, after the exact one
-        if (v_s2.z == 0.0)
-            return;
-        if (covers_centre()) {
+        // Not dilated (a corner behind v*, or edge-on): rasterised exactly,
+        // so every fragment covers its centre and only the tie rule applies.
+        // Skipping it lost a floor crossing the near plane that z-fights
+        // with its coincident reverse-wound twin.
+        if (v_s2.z == 0.0 || covers_centre()) {
             // Tied in depth with the nearest face at this centre (coplanar
             // faces): the depth test kept one, but an eye's raster may show
             // either (z-fighting), so both are visible from v*.

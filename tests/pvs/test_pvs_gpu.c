@@ -521,6 +521,33 @@ static void test_small_opening_at_view_edge(void)
     check_configuration(&f, "small opening at the edge of the view", 0.05f, FN_SLIVER, &hidden, 1, &through, 1);
 }
 
+/* A room whose ceiling is two coincident quads of opposite winding (a
+ * zero-thickness double-sided surface, as BSP levels export), large enough
+ * to pass behind v*: such triangles cross the near plane and are drawn
+ * undilated. Both twins tie in depth at every pixel; the depth test keeps
+ * one, but an eye's raster may show either (found on oa:oacmpdm9: the twin
+ * the PVS lost covered a third of some sample views), so both must be in. */
+static void test_coincident_twins_across_near_plane(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    const float e = 40.0f, yc = 2.0f;
+    const float ceiling[4][3] = {{-e, yc, -e}, {e, yc, -e}, {e, yc, e}, {-e, yc, e}}; /* faces down */
+    const float twin[4][3] = {{-e, yc, -e}, {-e, yc, e}, {e, yc, e}, {e, yc, -e}};    /* same diagonal, faces up */
+    uint32_t first = fx_quad(&f.scene, ceiling, m);
+    fx_quad(&f.scene, twin, m);
+    const float floor_q[4][3] = {{-e, -1.5f, -e}, {-e, -1.5f, e}, {e, -1.5f, e}, {e, -1.5f, -e}};
+    fx_quad(&f.scene, floor_q, m);
+    scn_scene_update_bounds(&f.scene);
+    fixture_open(&f, 0);
+    pvs_result r;
+    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.05f);
+    TV_CHECK(compute(&f, &vc, &r));
+    TV_CHECK(count_in_range(&r, first, 4) == 4);
+    TV_CHECK(apex_fn(&f, &r, &vc) == 0);
+    fixture_close(&f);
+}
+
 /* ---- k = 1: overflow is counted and loses nothing ---- */
 
 static void test_tiny_k_overflow(void)
@@ -609,6 +636,7 @@ int main(void)
     TV_TEST_RUN(test_thin_walls);
     TV_TEST_RUN(test_umbra_inside_umbra);
     TV_TEST_RUN(test_small_opening_at_view_edge);
+    TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_tiny_k_overflow);
     TV_TEST_RUN(test_city_no_false_negatives);
     TV_TEST_RUN(test_worker_thread);
