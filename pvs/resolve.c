@@ -5,7 +5,7 @@
 
 /* Upper bounds of the per-pixel sequences (thread-local arrays on the GPU). */
 #define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
-#define IV_MAX (TV_K_BACK < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK : TV_K_FRONT + TV_K_CARRY)
+#define IV_MAX (TV_K_BACK + 1 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 1 : TV_K_FRONT + TV_K_CARRY) // + a prior back
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
 typedef struct seq_entry {
@@ -96,6 +96,14 @@ static bool is_candidate(const seq_entry* e)
     return e->kind == TV_ENTRY_FRONT && (e->id & TV_ID_CANDIDATE) != 0;
 }
 
+/* Appends a front's triangle to the output; prior faces are already in the
+ * PVS through the visibility buffer. */
+static void emit(uint32_t* out, uint32_t* n, uint32_t id)
+{
+    if (id != TV_ID_PRIOR)
+        out[(*n)++] = id & ~TV_ID_CANDIDATE;
+}
+
 /* The overflow policy: every front this pixel knows of is output and the
  * pixel can no longer be sealed. */
 static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t* out)
@@ -103,10 +111,10 @@ static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t
     uint32_t n = 0;
     for (uint32_t i = 0; i < s->carry_count; i++) {
         if (s->carry[i].kind == TV_ENTRY_FRONT)
-            out[n++] = s->carry[i].id & ~TV_ID_CANDIDATE;
+            emit(out, &n, s->carry[i].id);
     }
     for (uint32_t i = 0; i < min_u32(k->front_count, TV_K_FRONT); i++)
-        out[n++] = k->front_tri[i] & ~TV_ID_CANDIDATE;
+        emit(out, &n, k->front_tri[i]);
     s->stencil = TV_STENCIL_OVERFLOW;
     s->carry_count = 0;
     s->hide_begin = s->hide_end = 0.0f;
@@ -132,9 +140,36 @@ static bool umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t re
     return true;
 }
 
-static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, seq_entry* seq)
+static bool has_depth(float d)
+{
+    return d > 0.0f && d < INFINITY;
+}
+
+/* Whether this layer stored a face of `kind` at exactly `depth`: P2 wrote
+ * the same value into the k-buffer and the centre depth, so a prior face
+ * found here is that face and must not enter twice (a second back at a
+ * validated back's depth would terminate the pixel). */
+static bool stored_face(const pvs_kbuf* k, uint32_t kind, float depth)
+{
+    uint32_t n = kind == TV_ENTRY_FRONT ? min_u32(k->front_count, TV_K_FRONT) : min_u32(k->back_count, TV_K_BACK);
+    for (uint32_t i = 0; i < n; i++) {
+        if ((kind == TV_ENTRY_FRONT ? k->front_depth[i] : k->back_depth[i]) == depth)
+            return true;
+    }
+    return false;
+}
+
+/* `first`: the pixel becomes trimmed in this layer, so its nearest front and
+ * nearest back join as prior faces unless this layer holds them. */
+static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, bool first, seq_entry* seq)
 {
     uint32_t n = 0;
+    if (first) {
+        if (has_depth(k->nearest_front) && !stored_face(k, TV_ENTRY_FRONT, k->nearest_front))
+            seq[n++] = make_entry(k->nearest_front, TV_ENTRY_FRONT, TV_ID_PRIOR, 0);
+        if (has_depth(k->nearest_back) && !stored_face(k, TV_ENTRY_BACK, k->nearest_back))
+            seq[n++] = make_entry(k->nearest_back, TV_ENTRY_BACK, TV_ID_PRIOR, 0);
+    }
     for (uint32_t i = 0; i < s->carry_count; i++) {
         if (s->carry[i].kind != TV_ENTRY_UMBRA)
             seq[n++] = make_entry(s->carry[i].depth, s->carry[i].kind, s->carry[i].id, 0);
@@ -156,6 +191,7 @@ typedef struct intervals {
     bool hidden[IV_MAX]; /* set by the walk: the run starts inside an umbra */
     float end[IV_MAX]; /* depth where the hidden range of a valid interval ends */
     int32_t run;       /* first front of the trailing unfinished run, -1 none */
+    bool trims_lost;   /* the trim list overflowed: see validate() */
 } intervals;
 
 /* Greedy simple intervals [f, b] over the fronts and backs, each extended at
@@ -182,13 +218,19 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
 
 /* An interval is valid when a trim fragment lies in [f, b]. Its hidden range
  * ends at the nearest umbra of the validating regions (the most conservative
- * choice), at b when none of them left an umbra here, never before b. */
+ * choice), at b when none of them left an umbra here, never before b.
+ * When trims were lost, any interval may have been validated by one of them,
+ * and the nearest umbra may have been theirs: every interval is valid and
+ * hides up to its back only. */
 static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* seq, uint32_t n,
                      intervals* iv)
 {
     for (uint32_t v = 0; v < iv->count; v++) {
         float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
-        iv->valid[v] = false;
+        iv->valid[v] = iv->trims_lost;
+        iv->end[v] = hi;
+        if (iv->trims_lost)
+            continue;
         for (uint32_t i = 0; i < n; i++) {
             if (seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
                 continue;
@@ -245,14 +287,14 @@ static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out
              * occluder (neither a run nor a terminator). */
             bool in_valid = e->interval >= 0 && iv->valid[e->interval] && !iv->hidden[e->interval];
             if (prefix == 0 || in_valid)
-                out[(*n_out)++] = e->id & ~TV_ID_CANDIDATE;
+                emit(out, n_out, e->id);
             continue;
         }
         if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->valid[e->interval]) {
             /* Every front of a validated interval's run is visible from the
              * viewcell unless the run starts inside an earlier umbra. */
             if (!iv->hidden[e->interval])
-                out[(*n_out)++] = e->id;
+                emit(out, n_out, e->id);
             continue;
         }
         if (!is_face || prefix > 0)
@@ -260,7 +302,7 @@ static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out
         if (e->kind == TV_ENTRY_FRONT && e->interval < 0)
             return false; /* the unfinished trailing run: carried, not a terminator */
         if (e->kind == TV_ENTRY_FRONT)
-            out[(*n_out)++] = e->id;
+            emit(out, n_out, e->id);
         return true;
     }
     return false;
@@ -302,7 +344,9 @@ static void carry_range(pvs_pixel_state* s, const seq_entry* seq, uint32_t n, co
 
 /* Carries the trailing unfinished run: its fronts, the trims behind its
  * first front (they may validate it once its back arrives) and those trims'
- * umbrae. Returns false when that does not fit in TV_K_CARRY. */
+ * umbrae; when trims were lost, also a trim without umbra (region
+ * TV_ID_PRIOR) at its first front, standing in for them. Returns false when
+ * that does not fit in TV_K_CARRY. */
 static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* seq, uint32_t n,
                       const intervals* iv)
 {
@@ -312,6 +356,11 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
         if (c == TV_K_CARRY)
             return false;
         next[c++] = (pvs_entry){seq[i].depth, seq[i].kind, seq[i].id};
+        if (iv->trims_lost && i == (uint32_t)iv->run) {
+            if (c == TV_K_CARRY)
+                return false;
+            next[c++] = (pvs_entry){seq[i].depth, TV_ENTRY_TRIM, TV_ID_PRIOR};
+        }
     }
     uint32_t run_entries = c;
     for (uint32_t i = 0; i < run_entries; i++) {
@@ -337,18 +386,19 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
         return 0;
     if (state->stencil == TV_STENCIL_UNTRIMMED && kbuf->trim_count == 0)
         return 0;
-    if (state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT ||
-        kbuf->back_count > TV_K_BACK || kbuf->trim_count > TV_K_TRIM ||
-        kbuf->umbra_count > TV_K_UMBRA) {
-        *overflowed = true;
+    *overflowed = state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT ||
+                  kbuf->back_count > TV_K_BACK || kbuf->trim_count > TV_K_TRIM || kbuf->umbra_count > TV_K_UMBRA;
+    if (state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT)
         return resolve_overflow(state, kbuf, out);
-    }
+    bool first = state->stencil == TV_STENCIL_UNTRIMMED;
+    assert(!first || state->carry_count == 0); /* room for the prior faces */
     state->stencil = TV_STENCIL_TRIMMED;
 
     seq_entry seq[SEQ_MAX], seq2[SEQ2_MAX];
     intervals iv;
-    uint32_t n = gather(state, kbuf, seq);
+    uint32_t n = gather(state, kbuf, first, seq);
     form_intervals(seq, n, &iv);
+    iv.trims_lost = kbuf->trim_count > TV_K_TRIM;
     validate(state, kbuf, seq, n, &iv);
     uint32_t m = replace_backs(state, seq, n, &iv, seq2);
     uint32_t n_out = 0;
@@ -364,7 +414,7 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
         *overflowed = true;
         for (uint32_t i = (uint32_t)iv.run; i < n; i++) {
             if (seq[i].kind == TV_ENTRY_FRONT)
-                out[n_out++] = seq[i].id & ~TV_ID_CANDIDATE;
+                emit(out, &n_out, seq[i].id);
         }
         state->stencil = TV_STENCIL_OVERFLOW;
         state->carry_count = 0;

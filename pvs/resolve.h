@@ -31,12 +31,32 @@
  * range, or inside a validated interval whose fronts are output. Output ids
  * never carry the flag.
  *
- * Overflow policy (never lose a front): P2 adds a front fragment that finds
- * its k-buffer full directly to the PVS (pvs_kbuf_push tells the caller). If
- * any k-buffer of the pixel overflowed, or the carry does not fit, the pixel
- * becomes TV_STENCIL_OVERFLOW: all its stored and carried fronts are output,
- * and in every later layer all fronts are output and the pixel is never
- * sealed. See docs/trim-regions.md for the rules and examples.
+ * Overflow policy (never lose a visible front), per list:
+ * - fronts: P2 adds a front fragment that finds its list full directly to
+ *   the PVS (pvs_kbuf_push tells the caller). A lost front could have opened
+ *   an interval whose back now looks like a terminator, in this or a later
+ *   layer, so the pixel becomes TV_STENCIL_OVERFLOW: all its stored and
+ *   carried fronts are output, and in every later layer all fronts are
+ *   output and the pixel is never sealed. The same when the carry does not
+ *   fit.
+ * - trims: any interval may have been validated by a lost trim, whose umbra
+ *   may have been the nearest: this layer's intervals are all valid and hide
+ *   up to their backs only; a carried run gets a trim without umbra
+ *   (region TV_ID_PRIOR) at its first front, which does the same later.
+ * - backs: nothing to do. A lost back merges two intervals into one (valid
+ *   when either was, hiding no further than the later back) or leaves a run
+ *   open; it never creates a terminator: only more output.
+ * - umbrae: nothing to do. A region whose umbra was lost hides up to the
+ *   back only.
+ * See docs/trim-regions.md for the rules and examples.
+ *
+ * Prior faces: when an untrimmed pixel becomes trimmed, its nearest face of
+ * this and the earlier layers (kbuf nearest_front / nearest_back) enters the
+ * sequence as a front and/or back with id TV_ID_PRIOR, which is never output.
+ * Without it a trim arriving in a later layer than its occluder's face (a
+ * triangle is drawn in its earliest layer only, and objects span layers)
+ * would resolve as if that face were absent: everything behind it counted
+ * as visible, or the object's back face taken for the terminator.
  */
 #ifndef TRIMVR_PVS_RESOLVE_H
 #define TRIMVR_PVS_RESOLVE_H
@@ -63,6 +83,10 @@ typedef struct pvs_kbuf {
     uint32_t trim_region[TV_K_TRIM];
     float umbra_depth[TV_K_UMBRA];
     uint32_t umbra_region[TV_K_UMBRA];
+    /* Nearest depth of the front / back faces covering the pixel centre over
+     * this and every earlier layer (P2's exact pass; 0 or INFINITY: none).
+     * Read only when the pixel becomes trimmed (TV_ID_PRIOR). */
+    float nearest_front, nearest_back;
 } pvs_kbuf;
 
 /* One trim-sequence entry. id: triangle id for fronts, trim-region id for
@@ -93,7 +117,8 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id);
  * `state`. A sealed pixel outputs nothing; an untrimmed pixel without trim
  * fragments outputs nothing either (its nearest front is the visibility
  * buffer's), otherwise the pixel becomes trimmed and is resolved. Sets
- * *overflowed when this call handled the pixel by the overflow policy. */
+ * *overflowed when a list of the pixel overflowed, its carry did not fit or
+ * it was already in overflow state (the statistics count these pixels). */
 uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out,
                            bool* overflowed);
 

@@ -80,4 +80,12 @@
  * nor terminates the pixel. Triangle ids stay below it. */
 #define TV_ID_CANDIDATE 0x80000000u
 
+/* Id of the "prior" face entries: the nearest faces (from v*) covering a
+ * pixel's centre up to the layer in which the pixel becomes trimmed. Until
+ * then the visibility buffer alone resolved the pixel, so P3 had kept none of
+ * its faces; they enter the trim sequence as faces with this id and are never
+ * output (the visibility buffer already holds them). Triangle ids stay below
+ * it. */
+#define TV_ID_PRIOR 0x7FFFFFFFu
+
 #endif

@@ -3,9 +3,10 @@
 // or back k-buffer. Both also write the visibility buffer (the pipeline's
 // LESS depth test keeps the nearest id), sealed pixels included, so that P4
 // sees the nearest triangle of every pixel (the renderer culls no faces).
-// The exact pass also keeps the nearest depth of the faces covering each
-// pixel centre (centre_depth). The dilated pass (TV_PVS_KIND_WIDE, see
-// pvs_face.vert) writes the wide visibility buffer and, at pixels whose
+// The exact pass also keeps the nearest depth of the front and of the back
+// faces covering each pixel centre (centre_depth; P3 reads them as the
+// prior faces of a pixel that becomes trimmed, TV_ID_PRIOR). The dilated
+// pass (TV_PVS_KIND_WIDE, see pvs_face.vert) writes the wide visibility buffer and, at pixels whose
 // centre the undilated triangle does not cover: flags the triangle when all
 // of it lies in front of that nearest centre depth (nothing covering the
 // centre hides it, so it is visible from v* through part of the pixel:
@@ -22,6 +23,7 @@ layout(location = 2) flat in uint v_material;
 layout(location = 3) flat in vec4 v_s01;
 layout(location = 4) flat in vec3 v_s2;
 layout(location = 5) flat in float v_far;
+layout(location = 6) flat in float v_near;
 
 layout(location = 0) out uint o_triangle;
 
@@ -45,9 +47,9 @@ void main()
     // Dilated pass: how far the dilated plane's depth may stray from the
     // exact one at this pixel (derivatives need uniform control flow, so
     // before any discard; pc.kind is uniform).
-    float w = pvs_depth(), tie_tolerance = 0.0;
+    float w = pvs_depth(), slope = 0.0;
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u)
-        tie_tolerance = (abs(dFdx(w)) + abs(dFdy(w))) * TV_PVS_MAX_DILATION_PX;
+        slope = abs(dFdx(w)) + abs(dFdy(w));
     vec4 base = tv_material_color(v_material, v_uv);
     if (tv_alpha_masked(v_material, base.a))
         discard;
@@ -55,8 +57,9 @@ void main()
     uint p = pvs_pixel();
     uint kind = pc.kind & ~TV_PVS_KIND_WIDE, id = v_triangle;
     if (kind == pc.kind) {
-        atomicMin(centre_depth[p], floatBitsToUint(pvs_depth()));
+        atomicMin(centre_depth[2u * p + (kind == TV_PVS_KIND_BACK ? 1u : 0u)], floatBitsToUint(w));
     } else { // the dilated pass, after the exact one
+        float nearest = uintBitsToFloat(min(centre_depth[2u * p], centre_depth[2u * p + 1u]));
         // Not dilated (a corner behind v*, or edge-on): rasterised exactly,
         // so every fragment covers its centre and only the tie rule applies.
         // Skipping it lost a floor crossing the near plane that z-fights
@@ -65,21 +68,27 @@ void main()
             // Tied in depth with the nearest face at this centre (coplanar
             // faces): the depth test kept one, but an eye's raster may show
             // either (z-fighting), so both are visible from v*.
-            if (w <= uintBitsToFloat(centre_depth[p]) + tie_tolerance)
+            if (w <= nearest + slope * TV_PVS_MAX_DILATION_PX)
                 tri_flags[v_triangle] = 1u;
             return;
         }
         // in front of everything covering the centre: visible from v*
         // through part of the pixel
-        if (v_far < uintBitsToFloat(centre_depth[p]))
+        if (v_far < nearest)
             tri_flags[v_triangle] = 1u;
         if (kind != TV_PVS_KIND_FRONT)
             return;
+        // A candidate stands for the part of the triangle inside the pixel,
+        // which may be nearer than its plane at the centre: it enters the
+        // sequence at the nearest depth it can have there, so that a face
+        // covering the centre does not hide it by comparing centre depths
+        // (it never occludes, so nearer only means more output).
+        w = max(v_near, w - 0.5 * slope);
         id |= TV_ID_CANDIDATE;
     }
     if (pvs_sealed(p))
         return;
-    if (!pvs_push(p, kind, pvs_depth(), id) && kind == TV_PVS_KIND_FRONT) {
+    if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
         tri_flags[v_triangle] = 1u; // overflow policy: a front that found no room is output
         atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);
     }

@@ -20,6 +20,7 @@ layout(location = 2) flat out uint v_material;
 layout(location = 3) flat out vec4 v_s01; // undilated screen corners 0 and 1
 layout(location = 4) flat out vec3 v_s2;  // corner 2, orientation (0: not dilated)
 layout(location = 5) flat out float v_far; // farthest corner's depth (clip w)
+layout(location = 6) flat out float v_near; // nearest corner's depth (clip w)
 
 // Dilation is clamped at sharp corners (a full-pixel dilation needs an
 // unbounded offset there) to TV_PVS_MAX_DILATION_PX; those corners stay
@@ -37,6 +38,7 @@ void main()
         c[i] = view.view_proj * vec4(tv_vertex_position(tv_vertex_index(tri, i)), 1.0);
     vec4 pos = c[corner];
     v_far = max(max(c[0].w, c[1].w), c[2].w);
+    v_near = min(min(c[0].w, c[1].w), c[2].w);
     v_s01 = vec4(0.0);
     v_s2 = vec3(0.0);
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && c[0].w > 0.0 && c[1].w > 0.0 && c[2].w > 0.0) {

@@ -27,7 +27,7 @@
 #define TV_PVS_BIND_VIS_IDS    17 // r32ui storage image: the visibility buffer's ids
 #define TV_PVS_BIND_LAYER_STATS 18 // uvec4 per layer: entries, active pixels, sequence sum, overflows
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
-#define TV_PVS_BIND_CENTRE_DEPTH 20 // uint per pixel: nearest depth bits of the faces covering its centre
+#define TV_PVS_BIND_CENTRE_DEPTH 20 // 2 uints per pixel: nearest depth bits of the front / back faces covering its centre
 #define TV_PVS_BINDINGS        21
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner

@@ -11,7 +11,7 @@
 layout(local_size_x = TV_WG_SIZE) in;
 
 #define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
-#define IV_MAX (TV_K_BACK < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK : TV_K_FRONT + TV_K_CARRY)
+#define IV_MAX (TV_K_BACK + 1 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 1 : TV_K_FRONT + TV_K_CARRY) // + a prior back
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
 struct seq_entry {
@@ -34,6 +34,8 @@ seq_entry seq2[SEQ2_MAX];
 uint iv_count;
 uint iv_first[IV_MAX], iv_back[IV_MAX];
 bool iv_valid[IV_MAX];
+bool trims_lost; // the trim list overflowed: see validate()
+bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
 float iv_end[IV_MAX];
 int iv_run;
 uint n_out;
@@ -51,6 +53,8 @@ bool entry_less(seq_entry a, seq_entry b)
 
 void output_id(uint id)
 {
+    if (id == TV_ID_PRIOR)
+        return;
     tri_flags[id & ~TV_ID_CANDIDATE] = 1u;
     n_out++;
 }
@@ -92,9 +96,26 @@ bool umbra_depth(uint region, inout float depth)
     return true;
 }
 
-uint gather()
+bool stored_face(uint kind, uint depth_bits)
+{
+    uint n = min(kind == TV_ENTRY_FRONT ? cnt.x : cnt.y, view.k);
+    for (uint i = 0u; i < n; i++)
+        if ((kind == TV_ENTRY_FRONT ? kfront[KB + i].x : kback[KB + i]) == depth_bits)
+            return true;
+    return false;
+}
+
+uint gather(bool first)
 {
     uint n = 0u;
+    if (first) {
+        const uint inf = 0x7F800000u;
+        uint f = centre_depth[2u * P], b = centre_depth[2u * P + 1u];
+        if (f < inf && !stored_face(TV_ENTRY_FRONT, f))
+            seq[n++] = make_entry(kdepth(f), TV_ENTRY_FRONT, TV_ID_PRIOR, 0);
+        if (b < inf && !stored_face(TV_ENTRY_BACK, b))
+            seq[n++] = make_entry(kdepth(b), TV_ENTRY_BACK, TV_ID_PRIOR, 0);
+    }
     for (uint i = 0u; i < carry_count; i++)
         if (carry[i].kind != TV_ENTRY_UMBRA)
             seq[n++] = make_entry(carry[i].depth, carry[i].kind, carry[i].id, 0);
@@ -139,7 +160,10 @@ void validate(uint n)
 {
     for (uint v = 0u; v < iv_count; v++) {
         float lo = seq[iv_first[v]].depth, hi = seq[iv_back[v]].depth;
-        iv_valid[v] = false;
+        iv_valid[v] = trims_lost;
+        iv_end[v] = hi;
+        if (trims_lost)
+            continue;
         for (uint i = 0u; i < n; i++) {
             if (seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
                 continue;
@@ -190,16 +214,19 @@ bool walk(uint m)
     int prefix = 0;
     for (uint i = 0u; i < m; i++) {
         seq_entry e = seq2[i];
-        prefix += e.delta;
         bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
+        if (e.delta > 0 && e.kind == TV_ENTRY_FRONT)
+            iv_hidden[e.interval] = prefix > 0;
+        prefix += e.delta;
         bool in_valid = e.interval >= 0 && iv_valid[e.interval];
         if (is_candidate(e)) { // touches the pixel only: output unless hidden, never an occluder
-            if (prefix == 0 || in_valid)
+            if (prefix == 0 || (in_valid && !iv_hidden[e.interval]))
                 output_id(e.id);
             continue;
         }
         if (e.kind == TV_ENTRY_FRONT && in_valid) {
-            output_id(e.id);
+            if (!iv_hidden[e.interval])
+                output_id(e.id);
             continue;
         }
         if (!is_face || prefix > 0)
@@ -253,6 +280,11 @@ bool carry_run(uint n)
         if (c == TV_K_CARRY)
             return false;
         next[c++] = seq[i];
+        if (trims_lost && i == uint(iv_run)) {
+            if (c == TV_K_CARRY)
+                return false;
+            next[c++] = make_entry(seq[i].depth, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
+        }
     }
     uint run_entries = c;
     for (uint i = 0u; i < run_entries; i++) {
@@ -277,14 +309,16 @@ bool resolve_pixel(out uint seq_len)
         return false;
     if (stencil == TV_STENCIL_UNTRIMMED && cnt.z == 0u)
         return false;
-    if (stencil == TV_STENCIL_OVERFLOW || any(greaterThan(cnt, uvec4(view.k)))) {
+    if (stencil == TV_STENCIL_OVERFLOW || cnt.x > view.k) {
         resolve_overflow();
         return true;
     }
+    bool first = stencil == TV_STENCIL_UNTRIMMED;
     stencil = TV_STENCIL_TRIMMED;
-    uint n = gather();
+    uint n = gather(first);
     seq_len = n;
     form_intervals(n);
+    trims_lost = cnt.z > view.k;
     validate(n);
     uint m = replace_backs(n);
     if (walk(m)) {
@@ -325,7 +359,7 @@ void main()
     }
     n_out = 0u;
     uint seq_len;
-    bool overflowed = resolve_pixel(seq_len);
+    bool overflowed = resolve_pixel(seq_len) || any(greaterThan(cnt, uvec4(view.k)));
 
     pixstate[P] = uvec4(stencil, carry_count, floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
     for (uint c = 0u; c < carry_count; c++)

@@ -35,6 +35,7 @@ typedef struct fixture {
     rnd_target* apex_target;
     pvs_context* pvs;
     float *depth, *pvs_depth;
+    uint32_t octree_cap; /* 0: the default */
 } fixture;
 
 static void fixture_open(fixture* f, uint32_t k)
@@ -43,7 +44,7 @@ static void fixture_open(fixture* f, uint32_t k)
     f->gpu = rnd_scene_create(g_rnd, &f->scene, err, sizeof err);
     f->target = f->gpu ? rnd_target_create(g_rnd, W, H, err, sizeof err) : NULL;
     f->apex_target = f->target ? rnd_target_create(g_rnd, PW, PH, err, sizeof err) : NULL;
-    f->pvs = f->apex_target ? pvs_create(g_rnd, &f->scene, f->gpu, &(pvs_desc){.width = PW, .height = PH, .k = k},
+    f->pvs = f->apex_target ? pvs_create(g_rnd, &f->scene, f->gpu, &(pvs_desc){.width = PW, .height = PH, .k = k, .octree_cap = f->octree_cap},
                                          err, sizeof err)
                             : NULL;
     if (!f->pvs) {
@@ -451,6 +452,7 @@ static void check_configuration(fixture* f, const char* what, float delta, doubl
     pvs_result r;
     pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, delta);
     TV_CHECK(compute(f, &vc, &r));
+    TV_CHECK(f->octree_cap == 0 || r.stats.layers > 3);
     for (int i = 0; i < n_hidden; i++)
         TV_CHECK(count_in_range(&r, hidden[i], 12) == 0);
     for (int i = 0; i < n_visible; i++)
@@ -497,6 +499,21 @@ static void test_umbra_inside_umbra(void)
     uint32_t hidden[2] = {add_box(&f.scene, -0.4f, -0.4f, -6.5f, 0.4f, 0.4f, -5.7f, m),
                           add_box(&f.scene, -1.0f, -1.0f, -12.0f, 1.0f, 1.0f, -11.0f, m)};
     check_configuration(&f, "umbra inside an umbra", 0.1f, FN_SIMPLE, hidden, 2, NULL, 0);
+}
+
+/* The same with leaves of at most 4 triangles: every occluder spans several
+ * layers, so a pixel often becomes trimmed in a later layer than the one
+ * holding its occluder's front face (the prior faces of resolve.h). */
+static void test_occluders_across_layers(void)
+{
+    fixture f = {.octree_cap = 4};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -2.0f, -1.5f, -4.2f, 2.0f, 1.5f, -4.0f, m);
+    add_box(&f.scene, -5.0f, -3.0f, -8.2f, 5.0f, 3.0f, -8.0f, m);
+    uint32_t hidden[2] = {add_box(&f.scene, -0.4f, -0.4f, -6.5f, 0.4f, 0.4f, -5.7f, m),
+                          add_box(&f.scene, -1.0f, -1.0f, -12.0f, 1.0f, 1.0f, -11.0f, m)};
+    uint32_t beside = add_box(&f.scene, 6.5f, -0.5f, -12.0f, 7.5f, 0.5f, -11.0f, m);
+    check_configuration(&f, "umbra inside an umbra, 4 triangles per leaf", 0.1f, FN_SIMPLE, hidden, 2, &beside, 1);
 }
 
 /* A 0.2 m square hole near the edge of the 60-degree target view (which
@@ -635,6 +652,7 @@ int main(void)
     TV_TEST_RUN(test_interpenetrating_occluders);
     TV_TEST_RUN(test_thin_walls);
     TV_TEST_RUN(test_umbra_inside_umbra);
+    TV_TEST_RUN(test_occluders_across_layers);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_tiny_k_overflow);

@@ -29,10 +29,15 @@ typedef struct layer_result {
     bool overflowed;
 } layer_result;
 
-static layer_result run_layer(pvs_pixel_state* s, const item* items, uint32_t n)
+/* prior_front / prior_back: P2's nearest front / back depth at the pixel
+ * centre over this and the earlier layers (0: none). */
+static layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_back, const item* items,
+                                    uint32_t n)
 {
     pvs_kbuf k;
     memset(&k, 0, sizeof k);
+    k.nearest_front = prior_front;
+    k.nearest_back = prior_back;
     layer_result r = {0};
     for (uint32_t i = 0; i < n; i++) {
         if (!pvs_kbuf_push(&k, items[i].kind, items[i].depth, items[i].id) && items[i].kind == TV_ENTRY_FRONT)
@@ -40,6 +45,11 @@ static layer_result run_layer(pvs_pixel_state* s, const item* items, uint32_t n)
     }
     r.count = pvs_resolve_pixel(s, &k, r.out, &r.overflowed);
     return r;
+}
+
+static layer_result run_layer(pvs_pixel_state* s, const item* items, uint32_t n)
+{
+    return run_layer_prior(s, 0.0f, 0.0f, items, n);
 }
 
 /* Output equals exactly the ids in `want` (order free). */
@@ -65,6 +75,9 @@ static bool same_set(const layer_result* r, const uint32_t* want, uint32_t n)
 #define CHECK_NONE(r) TV_CHECK((r).count == 0)
 #define RUN(s, ...)                                                             \
     run_layer(&(s), (const item[]){__VA_ARGS__}, sizeof((const item[]){__VA_ARGS__}) / sizeof(item))
+
+#define RUN_PRIOR(s, f, b, ...)                                                 \
+    run_layer_prior(&(s), f, b, (const item[]){__VA_ARGS__}, sizeof((const item[]){__VA_ARGS__}) / sizeof(item))
 
 #define C(d, id) {TV_ENTRY_FRONT, d, (id) | TV_ID_CANDIDATE}
 
@@ -241,7 +254,8 @@ static void test_overflow_keeps_every_front(void)
     TV_CHECK(r2.overflowed && s.stencil == TV_STENCIL_OVERFLOW);
 }
 
-/* An overflowing umbra list alone also triggers the policy. */
+/* A lost umbra only shortens a hidden range to its back: the pixel is
+ * resolved as usual (not the all-fronts policy), and reported. */
 static void test_overflow_umbra_list(void)
 {
     item items[TV_K_UMBRA + 4];
@@ -255,7 +269,95 @@ static void test_overflow_umbra_list(void)
     layer_result r = run_layer(&s, items, n);
     TV_CHECK(r.overflowed);
     CHECK_OUT(r, 1);
-    TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW);
+    TV_CHECK(s.stencil == TV_STENCIL_TRIMMED && s.hide_begin == 1.0f && s.hide_end == 5.0f);
+    layer_result r2 = RUN(s, F(4.0f, 2), B(4.5f), F(6.0f, 3), B(6.5f));
+    CHECK_OUT(r2, 3); /* 2 inside region 0's umbra, 3 the terminator */
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* Lost trims: every interval counts as validated, hiding up to its back.
+ * Alone, F1 would terminate; with trims lost F1, F2, F3 are output and the
+ * pixel stays open; a carried run gets a stand-in trim that validates it in
+ * the next layer. */
+static void test_overflow_trim_list(void)
+{
+    item items[TV_K_TRIM + 8];
+    uint32_t n = 0;
+    for (uint32_t i = 0; i <= TV_K_TRIM; i++)
+        items[n++] = (item)T(0.5f, i);
+    const item rest[] = {F(1.0f, 1), B(1.5f), F(2.0f, 2), B(2.5f), F(3.0f, 3), B(3.5f), F(4.0f, 4)};
+    for (uint32_t i = 0; i < sizeof rest / sizeof rest[0]; i++)
+        items[n++] = rest[i];
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed);
+    CHECK_OUT(r, 1, 2, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_TRIMMED && s.carry_count == 2);
+    TV_CHECK(s.carry[1].kind == TV_ENTRY_TRIM && s.carry[1].id == TV_ID_PRIOR && s.carry[1].depth == 4.0f);
+    layer_result r2 = RUN(s, B(4.5f), F(5.0f, 5), B(5.5f), F(6.0f, 6));
+    CHECK_OUT(r2, 4, 5); /* [4, 4.5] validated by the stand-in, 5 terminates */
+    TV_CHECK(!r2.overflowed && s.stencil == TV_STENCIL_SEALED);
+}
+
+/* A lost back merges two intervals: [F1, B1.5] (valid, umbra 1.8) and
+ * [F2, B3.5] (not valid) become one valid interval hiding to 3.5. The
+ * output is the same (F2 is the terminator in the full sequence); only the
+ * far fillers decide where it seals. */
+static void test_overflow_back_list(void)
+{
+    item items[TV_K_BACK + 8];
+    uint32_t n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)T(1.2f, 1);
+    items[n++] = (item)U(1.8f, 1);
+    items[n++] = (item)F(2.0f, 2);
+    for (uint32_t i = 0; i + 1 < TV_K_BACK; i++)
+        items[n++] = (item)B(100.0f + (float)i);
+    items[n++] = (item)B(3.5f);
+    items[n++] = (item)B(1.5f); /* no room: lost */
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed);
+    CHECK_OUT(r, 1, 2);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* Prior faces: the pixel's nearest faces from earlier layers (P2's centre
+ * depths) enter the sequence when it becomes trimmed, never output. Here an
+ * occluder [1, 2] drawn in an earlier layer gets its trim and umbra only now
+ * (an object spanning layers): it hides F2 and lets F3 through, where
+ * without it F2 would have been taken for the terminator and F3 lost. */
+static void test_prior_faces(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN_PRIOR(s, 1.0f, 2.0f, T(1.5f, 1), U(3.0f, 1), F(2.5f, 2), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    pvs_pixel_state t = {0};
+    r = RUN(t, T(1.5f, 1), U(3.0f, 1), F(2.5f, 2), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 2); /* what the resolve did without prior faces */
+    /* an untrimmed solid in front of a newly trimmed one seals at once */
+    pvs_pixel_state u = {0};
+    r = RUN_PRIOR(u, 1.0f, 1.5f, F(5.0f, 5), T(5.2f, 2), B(5.5f), U(9.0f, 2), F(10.0f, 6));
+    CHECK_NONE(r);
+    TV_CHECK(u.stencil == TV_STENCIL_SEALED);
+    /* a single-sided surface seen from behind (a back alone) too */
+    pvs_pixel_state v = {0};
+    r = RUN_PRIOR(v, 0.0f, 1.0f, F(5.0f, 5), T(5.2f, 2), B(5.5f));
+    CHECK_NONE(r);
+    TV_CHECK(v.stencil == TV_STENCIL_SEALED);
+    /* a prior face that this layer stored is not added twice: a second back
+     * at the validated [1, 1.5]'s depth would have terminated the pixel */
+    pvs_pixel_state x = {0};
+    r = RUN_PRIOR(x, 1.0f, 1.5f, F(1.0f, 1), T(1.2f, 1), B(1.5f), F(2.0f, 2), T(2.2f, 2), B(2.5f), U(4.0f, 2),
+                  F(5.0f, 3));
+    CHECK_OUT(r, 1, 2);
+    TV_CHECK(x.stencil == TV_STENCIL_TRIMMED && x.carry_count == 1);
+    /* prior faces only join when the pixel becomes trimmed */
+    pvs_pixel_state w = {0};
+    RUN(w, F(0.5f, 1), T(0.6f, 3), B(0.7f), U(0.8f, 3), F(0.9f, 9));
+    r = RUN_PRIOR(w, 0.0f, 0.85f, F(5.0f, 5), B(5.5f));
+    CHECK_OUT(r, 9); /* the carried 9 terminates; a prior back at 0.85 would have hidden it */
 }
 
 /* A trailing run longer than the carry: its fronts are output at once. */
@@ -353,6 +455,9 @@ int main(void)
     TV_TEST_RUN(test_fast_paths);
     TV_TEST_RUN(test_overflow_keeps_every_front);
     TV_TEST_RUN(test_overflow_umbra_list);
+    TV_TEST_RUN(test_overflow_trim_list);
+    TV_TEST_RUN(test_overflow_back_list);
+    TV_TEST_RUN(test_prior_faces);
     TV_TEST_RUN(test_carry_overflow);
     TV_TEST_RUN(test_random_sequences_order_free);
     return tv_test_finish();
