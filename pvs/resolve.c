@@ -58,8 +58,11 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id)
     uint32_t s;
     switch (kind) {
     case TV_ENTRY_FRONT:
-        if (!claim(&kbuf->front_count, TV_K_FRONT, &s))
+        if (!claim(&kbuf->front_count, TV_K_FRONT, &s)) {
+            if ((id & TV_ID_CANDIDATE) == 0 && (kbuf->front_lost == 0.0f || depth < kbuf->front_lost))
+                kbuf->front_lost = depth;
             return false;
+        }
         kbuf->front_depth[s] = depth;
         kbuf->front_tri[s] = id;
         return true;
@@ -272,8 +275,8 @@ static uint32_t replace_backs(const pvs_pixel_state* s, const seq_entry* seq, ui
 }
 
 /* Front-to-back walk with the running prefix sum; returns true when a
- * terminator sealed the pixel. */
-static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out, uint32_t* n_out)
+ * terminator sealed the pixel and sets *term to its depth. */
+static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out, uint32_t* n_out, float* term)
 {
     int32_t prefix = 0;
     for (uint32_t i = 0; i < m; i++) {
@@ -303,6 +306,7 @@ static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out
             return false; /* the unfinished trailing run: carried, not a terminator */
         if (e->kind == TV_ENTRY_FRONT)
             emit(out, n_out, e->id);
+        *term = e->depth;
         return true;
     }
     return false;
@@ -388,7 +392,7 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
         return 0;
     *overflowed = state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT ||
                   kbuf->back_count > TV_K_BACK || kbuf->trim_count > TV_K_TRIM || kbuf->umbra_count > TV_K_UMBRA;
-    if (state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT)
+    if (state->stencil == TV_STENCIL_OVERFLOW)
         return resolve_overflow(state, kbuf, out);
     bool first = state->stencil == TV_STENCIL_UNTRIMMED;
     assert(!first || state->carry_count == 0); /* room for the prior faces */
@@ -402,7 +406,11 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
     validate(state, kbuf, seq, n, &iv);
     uint32_t m = replace_backs(state, seq, n, &iv, seq2);
     uint32_t n_out = 0;
-    if (walk(seq2, m, &iv, out, &n_out)) {
+    float term = INFINITY, lost = has_depth(kbuf->front_lost) ? kbuf->front_lost : INFINITY;
+    bool sealed = walk(seq2, m, &iv, out, &n_out, &term);
+    if (lost < INFINITY && !(sealed && term < lost))
+        return resolve_overflow(state, kbuf, out); /* outputs what the walk did, and more */
+    if (sealed) {
         state->stencil = TV_STENCIL_SEALED;
         state->carry_count = 0;
         state->hide_begin = state->hide_end = 0.0f;

@@ -33,12 +33,15 @@
  *
  * Overflow policy (never lose a visible front), per list:
  * - fronts: P2 adds a front fragment that finds its list full directly to
- *   the PVS (pvs_kbuf_push tells the caller). A lost front could have opened
- *   an interval whose back now looks like a terminator, in this or a later
- *   layer, so the pixel becomes TV_STENCIL_OVERFLOW: all its stored and
- *   carried fronts are output, and in every later layer all fronts are
- *   output and the pixel is never sealed. The same when the carry does not
- *   fit.
+ *   the PVS (pvs_kbuf_push tells the caller) and keeps the nearest depth of
+ *   those (front_lost). The sequence is complete in front of that depth: a
+ *   terminator found there seals the pixel as usual, the lost fronts lying
+ *   behind it. Otherwise a lost front could have opened an interval whose
+ *   back now looks like a terminator, in this or a later layer, so the pixel
+ *   becomes TV_STENCIL_OVERFLOW: all its stored and carried fronts are
+ *   output, and in every later layer all fronts are output and the pixel is
+ *   never sealed. The same when the carry does not fit. Lost candidates
+ *   change nothing (they never occlude).
  * - trims: any interval may have been validated by a lost trim, whose umbra
  *   may have been the nearest: this layer's intervals are all valid and hide
  *   up to their backs only; a carried run gets a trim without umbra
@@ -87,6 +90,9 @@ typedef struct pvs_kbuf {
      * this and every earlier layer (P2's exact pass; 0 or INFINITY: none).
      * Read only when the pixel becomes trimmed (TV_ID_PRIOR). */
     float nearest_front, nearest_back;
+    /* Nearest depth of a front (not a candidate) that found the front list
+     * full (0: none); pvs_kbuf_push keeps it, as P2's atomicMin does. */
+    float front_lost;
 } pvs_kbuf;
 
 /* One trim-sequence entry. id: triangle id for fronts, trim-region id for

@@ -37,8 +37,11 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
     uint d = floatBitsToUint(depth);
     if (kind == TV_PVS_KIND_FRONT) {
         slot = atomicAdd(pixcount[p].x, 1u);
-        if (slot >= view.k)
+        if (slot >= view.k) {
+            if ((id & TV_ID_CANDIDATE) == 0u)
+                atomicMin(front_lost[p], d);
             return false;
+        }
         kfront[p * view.k + slot] = uvec2(d, id);
     } else if (kind == TV_PVS_KIND_BACK) {
         slot = atomicAdd(pixcount[p].y, 1u);

@@ -28,7 +28,8 @@
 #define TV_PVS_BIND_LAYER_STATS 18 // uvec4 per layer: entries, active pixels, sequence sum, overflows
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
 #define TV_PVS_BIND_CENTRE_DEPTH 20 // 2 uints per pixel: nearest depth bits of the front / back faces covering its centre
-#define TV_PVS_BINDINGS        21
+#define TV_PVS_BIND_FRONT_LOST 21 // uint per pixel: nearest depth bits of the fronts (not candidates) the layer's k-buffer had no room for
+#define TV_PVS_BINDINGS        22
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
 // behind e1, trim corner behind e0, umbra far corner behind e1, behind e0.

@@ -39,6 +39,7 @@ bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
 float iv_end[IV_MAX];
 int iv_run;
 uint n_out;
+float term_depth; // depth of the terminator that sealed the pixel
 
 seq_entry make_entry(float depth, uint kind, uint id, int delta) { return seq_entry(depth, kind, id, -1, delta); }
 
@@ -235,6 +236,7 @@ bool walk(uint m)
             return false;
         if (e.kind == TV_ENTRY_FRONT)
             output_id(e.id);
+        term_depth = e.depth;
         return true;
     }
     return false;
@@ -309,7 +311,7 @@ bool resolve_pixel(out uint seq_len)
         return false;
     if (stencil == TV_STENCIL_UNTRIMMED && cnt.z == 0u)
         return false;
-    if (stencil == TV_STENCIL_OVERFLOW || cnt.x > view.k) {
+    if (stencil == TV_STENCIL_OVERFLOW) {
         resolve_overflow();
         return true;
     }
@@ -321,7 +323,13 @@ bool resolve_pixel(out uint seq_len)
     trims_lost = cnt.z > view.k;
     validate(n);
     uint m = replace_backs(n);
-    if (walk(m)) {
+    float lost = kdepth(front_lost[P]);
+    bool sealed = walk(m);
+    if (lost < kdepth(0x7F800000u) && !(sealed && term_depth < lost)) {
+        resolve_overflow(); // outputs what the walk did, and more
+        return true;
+    }
+    if (sealed) {
         stencil = TV_STENCIL_SEALED;
         carry_count = 0u;
         hide_begin = hide_end = 0.0;

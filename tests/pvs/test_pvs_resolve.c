@@ -224,22 +224,26 @@ static void test_fast_paths(void)
     TV_CHECK(t.stencil == TV_STENCIL_SEALED);
 }
 
-/* k-buffer overflow: every front is either spilled by P2 or output by P3,
- * and the pixel stays open: later layers output all their fronts. */
+/* Front overflow: every front is either spilled by P2 or output by P3, and
+ * the pixel stays open (later layers output all their fronts) unless a
+ * terminator lies in front of the nearest lost front. Here the interval
+ * [1, 1.5] hides everything up to its umbra at 60, beyond the lost ones. */
 static void test_overflow_keeps_every_front(void)
 {
-    item items[TV_K_FRONT + 12 + 2];
+    item items[TV_K_FRONT + 12 + 4];
     uint32_t n = 0;
-    items[n++] = (item)T(0.5f, 1);
-    items[n++] = (item)B(0.7f);
-    for (uint32_t i = 0; i < TV_K_FRONT + 12; i++)
-        items[n++] = (item)F(1.0f + (float)i, 100 + i);
+    items[n++] = (item)F(1.0f, 99);
+    items[n++] = (item)T(1.2f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)U(60.0f, 1);
+    for (uint32_t i = 0; i < TV_K_FRONT + 11; i++)
+        items[n++] = (item)F(2.0f + (float)i, 100 + i);
     pvs_pixel_state s = {0};
     layer_result r = run_layer(&s, items, n);
     TV_CHECK(r.overflowed);
     TV_CHECK(r.spilled_count == 12 && r.count == TV_K_FRONT);
     bool all = true;
-    for (uint32_t i = 0; i < TV_K_FRONT + 12; i++) {
+    for (uint32_t i = 0; i < TV_K_FRONT + 11; i++) {
         bool found = false;
         for (uint32_t j = 0; j < r.count; j++)
             found |= r.out[j] == 100 + i;
@@ -252,6 +256,38 @@ static void test_overflow_keeps_every_front(void)
     layer_result r2 = RUN(s, F(50.0f, 7), B(51.0f), F(52.0f, 8), B(53.0f));
     CHECK_OUT(r2, 7, 8); /* 7 would have terminated a normal pixel */
     TV_CHECK(r2.overflowed && s.stencil == TV_STENCIL_OVERFLOW);
+}
+
+/* A terminator in front of every lost front seals the pixel as usual: the
+ * lost fronts (already in the PVS through P2) lie behind it. Lost
+ * candidates never send a pixel to the overflow state. */
+static void test_overflow_behind_terminator(void)
+{
+    item items[TV_K_FRONT + 8];
+    uint32_t n = 0;
+    items[n++] = (item)T(0.5f, 1);
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)B(1.5f);
+    for (uint32_t i = 0; n < TV_K_FRONT + 8; i++)
+        items[n++] = (item)F(2.0f + (float)i, 100 + i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed && r.spilled_count == 6);
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+
+    n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)T(1.2f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)U(60.0f, 1);
+    for (uint32_t i = 0; n < TV_K_FRONT + 8; i++)
+        items[n++] = (item)C(2.0f + (float)i, 100 + i);
+    pvs_pixel_state t = {0};
+    r = run_layer(&t, items, n);
+    TV_CHECK(r.overflowed && r.spilled_count == 5);
+    CHECK_OUT(r, 1); /* the stored candidates lie in the umbra */
+    TV_CHECK(t.stencil == TV_STENCIL_TRIMMED);
 }
 
 /* A lost umbra only shortens a hidden range to its back: the pixel is
@@ -454,6 +490,7 @@ int main(void)
     TV_TEST_RUN(test_carry_trim_and_umbra);
     TV_TEST_RUN(test_fast_paths);
     TV_TEST_RUN(test_overflow_keeps_every_front);
+    TV_TEST_RUN(test_overflow_behind_terminator);
     TV_TEST_RUN(test_overflow_umbra_list);
     TV_TEST_RUN(test_overflow_trim_list);
     TV_TEST_RUN(test_overflow_back_list);
