@@ -138,6 +138,7 @@ static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
     uint32_t c[TV_PVS_C_PER_LAYER] = {0};
     for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_UMBRA; d += 4)
         c[d + 1] = 1; /* instanceCount */
+    c[TV_PVS_C_DRAW_SPILL + 1] = 1;
     c[TV_PVS_C_DISPATCH + 1] = c[TV_PVS_C_DISPATCH + 2] = 1;
     vkCmdUpdateBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, 0, sizeof c, c);
 }
@@ -152,11 +153,15 @@ static void draw_indirect(pvs_context* ctx, VkCommandBuffer cmd, int pipe, uint3
                       sizeof(VkDrawIndirectCommand));
 }
 
+typedef enum pass_kind { PASS_CLEAR, PASS_LAYER, PASS_SPILL } pass_kind;
+
 /* One dynamic-rendering pass on visibility buffer `vis` (0 exact, 1 wide):
- * clear only, or P2's draws of the current layer (the wide pass draws the
- * faces only, dilated, for the visibility buffer). */
-static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, int vis, bool clear)
+ * clear only, P2's draws of the current layer (the wide pass draws the
+ * faces only, dilated, for the visibility buffer), or the spill draw after
+ * P3 (exact; it changes neither attachment: every fragment ties in depth). */
+static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, int vis, pass_kind what)
 {
+    bool clear = what == PASS_CLEAR;
     VkRenderingAttachmentInfo color = {.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                        .imageView = ctx->vis_ids[vis].view,
                                        .imageLayout = VK_IMAGE_LAYOUT_GENERAL,
@@ -180,6 +185,11 @@ static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, int vis, bool cle
     if (!clear) {
         vkCmdSetViewport(cmd, 0, 1, &(VkViewport){0.0f, 0.0f, (float)ctx->width, (float)ctx->height, 0.0f, 1.0f});
         vkCmdSetScissor(cmd, 0, 1, &area);
+    }
+    if (what == PASS_SPILL)
+        draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | TV_PVS_KIND_SPILL | (vis ? TV_PVS_KIND_WIDE : 0u),
+                      TV_PVS_C_DRAW_SPILL);
+    if (what == PASS_LAYER) {
         const uint32_t wide = vis ? TV_PVS_KIND_WIDE : 0u;
         draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | wide, TV_PVS_C_DRAW_FF);
         draw_indirect(ctx, cmd, PVS_PIPE_BF, TV_PVS_KIND_BACK | wide, TV_PVS_C_DRAW_BF);
@@ -207,7 +217,7 @@ static void reset_buffers(pvs_context* ctx, VkCommandBuffer cmd)
             VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
             VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-        render_pass(ctx, cmd, v, true);
+        render_pass(ctx, cmd, v, PASS_CLEAR);
     }
     barrier(cmd);
 }
@@ -263,13 +273,16 @@ static void record(pvs_context* ctx, VkCommandBuffer cmd)
         vkCmdDispatch(cmd, (push.layer_count + TV_WG_SIZE - 1) / TV_WG_SIZE, 1, 1);
         barrier(cmd);
         timestamp(ctx, cmd, &ts);
-        render_pass(ctx, cmd, 0, false);
+        render_pass(ctx, cmd, 0, PASS_LAYER);
         barrier(cmd); /* the dilated pass reads the exact pass's centre depths */
-        render_pass(ctx, cmd, 1, false);
+        render_pass(ctx, cmd, 1, PASS_LAYER);
         barrier(cmd);
         timestamp(ctx, cmd, &ts);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE]);
         vkCmdDispatchIndirect(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, TV_PVS_C_DISPATCH * sizeof(uint32_t));
+        barrier(cmd);
+        render_pass(ctx, cmd, 0, PASS_SPILL); /* both empty unless P2 lost a front */
+        render_pass(ctx, cmd, 1, PASS_SPILL);
         barrier(cmd);
         timestamp(ctx, cmd, &ts);
     }

@@ -411,6 +411,7 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
     if (lost < INFINITY && !(sealed && term < lost))
         return resolve_overflow(state, kbuf, out); /* outputs what the walk did, and more */
     if (sealed) {
+        state->term_depth = term;
         state->stencil = TV_STENCIL_SEALED;
         state->carry_count = 0;
         state->hide_begin = state->hide_end = 0.0f;
@@ -429,4 +430,15 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
         state->hide_begin = state->hide_end = 0.0f;
     }
     return n_out;
+}
+
+bool pvs_spill_output(const pvs_pixel_state* state, uint32_t id, float depth)
+{
+    assert(state);
+    if (state->stencil == TV_STENCIL_OVERFLOW)
+        return true;
+    if ((id & TV_ID_CANDIDATE) == 0)
+        return false;
+    return state->stencil == TV_STENCIL_TRIMMED ||
+           (state->stencil == TV_STENCIL_SEALED && depth < state->term_depth);
 }

@@ -32,9 +32,9 @@
  * never carry the flag.
  *
  * Overflow policy (never lose a visible front), per list:
- * - fronts: P2 adds a front fragment that finds its list full directly to
- *   the PVS (pvs_kbuf_push tells the caller) and keeps the nearest depth of
- *   those (front_lost). The sequence is complete in front of that depth: a
+ * - fronts: P2 keeps the nearest depth of the fronts that find the list full
+ *   (front_lost; pvs_kbuf_push tells the caller, who decides with
+ *   pvs_spill_output after the resolve whether to add them to the PVS). The sequence is complete in front of that depth: a
  *   terminator found there seals the pixel as usual, the lost fronts lying
  *   behind it. Otherwise a lost front could have opened an interval whose
  *   back now looks like a terminator, in this or a later layer, so the pixel
@@ -108,12 +108,14 @@ typedef struct pvs_pixel_state {
     uint32_t carry_count;
     pvs_entry carry[TV_K_CARRY]; /* kinds FRONT, TRIM, UMBRA, in depth order */
     float hide_begin, hide_end;  /* a carried hidden range when hide_begin < hide_end */
+    float term_depth;            /* the terminator's depth once sealed */
 } pvs_pixel_state;
 
 /* P2's insertion of one fragment of `kind` (TV_ENTRY_FRONT, BACK, TRIM or
  * UMBRA) into the pixel's k-buffer: increments the counter, stores the entry
  * when there is room. Returns false when the list was full; for a front the
- * caller must then add `id` to the PVS itself. Asserts a valid kind. */
+ * caller must then keep `id` and ask pvs_spill_output after the resolve.
+ * Asserts a valid kind. */
 bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id);
 
 /* Resolves one active pixel after P2 rasterised a layer (depth: any value
@@ -127,6 +129,16 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id);
  * it was already in overflow state (the statistics count these pixels). */
 uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out,
                            bool* overflowed);
+
+/* After pvs_resolve_pixel of the layer: whether a front (id with or without
+ * TV_ID_CANDIDATE, at the depth it was pushed with) that found the front
+ * list full must be added to the PVS. At an overflowed pixel every one; at
+ * a pixel left open, every candidate (a lost front would have overflowed
+ * it); at a pixel sealed in this layer, the candidates in front of its
+ * terminator (lost fronts lie behind it); at an untrimmed pixel none: its
+ * visibility buffer holds its nearest face, and P3 ignores its fronts. The
+ * GPU's spill draws after P3 decide the same way. */
+bool pvs_spill_output(const pvs_pixel_state* state, uint32_t id, float depth);
 
 #ifdef __cplusplus
 }

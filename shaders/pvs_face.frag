@@ -42,6 +42,30 @@ bool covers_centre()
     return true;
 }
 
+// The spill draws after P3 (exact and dilated) at pixels whose front list
+// overflowed in this layer; they cannot tell a lost fragment from a stored
+// one, so they output what P3 may not have: every front and candidate of an
+// overflowed pixel, the candidates of a pixel left open, and those in front
+// of the terminator of a pixel P3 sealed. An untrimmed pixel needs nothing
+// (its visibility buffer holds its nearest face; P3 ignores its fronts).
+void spill(uint p, float w, float slope)
+{
+    if (pixcount[p].x <= view.k)
+        return;
+    uint state = pixstate[p].x;
+    if ((pc.kind & TV_PVS_KIND_WIDE) == 0u) {
+        if (state == TV_STENCIL_OVERFLOW)
+            tri_flags[v_triangle] = 1u;
+        return;
+    }
+    if (v_s2.z == 0.0 || covers_centre())
+        return; // not a candidate: the exact spill draw's
+    float depth = max(v_near, w - 0.5 * slope); // as P2 pushed it
+    if (state == TV_STENCIL_OVERFLOW || state == TV_STENCIL_TRIMMED ||
+        (state == TV_STENCIL_SEALED && depth < uintBitsToFloat(front_lost[2u * p + 1u])))
+        tri_flags[v_triangle] = 1u;
+}
+
 void main()
 {
     // Dilated pass: how far the dilated plane's depth may stray from the
@@ -55,6 +79,10 @@ void main()
         discard;
     o_triangle = v_triangle;
     uint p = pvs_pixel();
+    if ((pc.kind & TV_PVS_KIND_SPILL) != 0u) {
+        spill(p, w, slope);
+        return;
+    }
     uint kind = pc.kind & ~TV_PVS_KIND_WIDE, id = v_triangle;
     if (kind == pc.kind) {
         atomicMin(centre_depth[2u * p + (kind == TV_PVS_KIND_BACK ? 1u : 0u)], floatBitsToUint(w));
@@ -82,14 +110,15 @@ void main()
         // which may be nearer than its plane at the centre: it enters the
         // sequence at the nearest depth it can have there, so that a face
         // covering the centre does not hide it by comparing centre depths
-        // (it never occludes, so nearer only means more output).
+        // (it never occludes, so nearer only means more output). spill()
+        // repeats this.
         w = max(v_near, w - 0.5 * slope);
         id |= TV_ID_CANDIDATE;
     }
     if (pvs_sealed(p))
         return;
     if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
-        tri_flags[v_triangle] = 1u; // overflow policy: a front that found no room is output
+        // overflow policy: left to the spill draws after P3
         atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);
     }
 }

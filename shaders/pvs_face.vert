@@ -32,7 +32,7 @@ void main()
 {
     uint slot = uint(gl_VertexIndex) / 3u;
     uint corner = uint(gl_VertexIndex) - slot * 3u;
-    uint tri = (pc.kind & ~TV_PVS_KIND_WIDE) == TV_PVS_KIND_FRONT ? ff_list[slot] : bf_list[slot];
+    uint tri = (pc.kind & ~(TV_PVS_KIND_WIDE | TV_PVS_KIND_SPILL)) == TV_PVS_KIND_FRONT ? ff_list[slot] : bf_list[slot];
     vec4 c[3];
     for (uint i = 0u; i < 3u; i++)
         c[i] = view.view_proj * vec4(tv_vertex_position(tv_vertex_index(tri, i)), 1.0);

@@ -39,7 +39,8 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
         slot = atomicAdd(pixcount[p].x, 1u);
         if (slot >= view.k) {
             if ((id & TV_ID_CANDIDATE) == 0u)
-                atomicMin(front_lost[p], d);
+                atomicMin(front_lost[2u * p], d);
+            counters[TV_PVS_C_DRAW_SPILL] = counters[TV_PVS_C_DRAW_FF]; // P1 is done: a stable value
             return false;
         }
         kfront[p * view.k + slot] = uvec2(d, id);

@@ -28,7 +28,7 @@
 #define TV_PVS_BIND_LAYER_STATS 18 // uvec4 per layer: entries, active pixels, sequence sum, overflows
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
 #define TV_PVS_BIND_CENTRE_DEPTH 20 // 2 uints per pixel: nearest depth bits of the front / back faces covering its centre
-#define TV_PVS_BIND_FRONT_LOST 21 // uint per pixel: nearest depth bits of the fronts (not candidates) the layer's k-buffer had no room for
+#define TV_PVS_BIND_FRONT_LOST 21 // 2 uints per pixel: nearest depth bits of the fronts (not candidates) the layer's k-buffer had no room for (P2), of the terminator that sealed the pixel (P3)
 #define TV_PVS_BINDINGS        22
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
@@ -37,18 +37,20 @@
 
 // Slots of the counters buffer (uints). Four VkDrawIndirectCommand (FF, BF,
 // trim, umbra; vertexCount is bumped by P1 per primitive), one
-// VkDispatchIndirectCommand for P3, then counters that live for a whole
-// pvs_compute.
+// VkDispatchIndirectCommand for P3, the active count, the spill draw (the
+// FF draw again, after P3; P2 copies FF's vertexCount into it when a front
+// is lost), then counters that live for a whole pvs_compute.
 #define TV_PVS_C_DRAW_FF    0
 #define TV_PVS_C_DRAW_BF    4
 #define TV_PVS_C_DRAW_TRIM  8
 #define TV_PVS_C_DRAW_UMBRA 12
 #define TV_PVS_C_DISPATCH   16
 #define TV_PVS_C_ACTIVE     19 // active pixels of the current layer
-#define TV_PVS_C_PER_LAYER  20 // slots [0, 20) are reset before every layer
-#define TV_PVS_C_REGIONS    20 // trim regions numbered so far
-#define TV_PVS_C_OVERFLOW_FRONTS 21
-#define TV_PVS_C_COUNT      24
+#define TV_PVS_C_DRAW_SPILL 20
+#define TV_PVS_C_PER_LAYER  24 // slots [0, 24) are reset before every layer
+#define TV_PVS_C_REGIONS    24 // trim regions numbered so far
+#define TV_PVS_C_OVERFLOW_FRONTS 25
+#define TV_PVS_C_COUNT      28
 
 // Fragment kinds of P2 (push constant `kind`), = TV_ENTRY_* of config.h.
 #define TV_PVS_KIND_FRONT 1u
@@ -58,5 +60,8 @@
 // Flag on FRONT/BACK: the dilated pass (wide visibility buffer; fronts that
 // miss the pixel centre become candidate fronts).
 #define TV_PVS_KIND_WIDE 256u
+// Flag on FRONT (and WIDE): the spill draws after P3 (pvs_face.frag): output
+// the fronts and candidates P2 had no room for where P3 did not hide them.
+#define TV_PVS_KIND_SPILL 512u
 
 #endif

@@ -323,13 +323,14 @@ bool resolve_pixel(out uint seq_len)
     trims_lost = cnt.z > view.k;
     validate(n);
     uint m = replace_backs(n);
-    float lost = kdepth(front_lost[P]);
+    float lost = kdepth(front_lost[2u * P]);
     bool sealed = walk(m);
     if (lost < kdepth(0x7F800000u) && !(sealed && term_depth < lost)) {
         resolve_overflow(); // outputs what the walk did, and more
         return true;
     }
     if (sealed) {
+        front_lost[2u * P + 1u] = floatBitsToUint(term_depth); // for the spill draw
         stencil = TV_STENCIL_SEALED;
         carry_count = 0u;
         hide_begin = hide_end = 0.0;

@@ -24,8 +24,9 @@ typedef struct item {
 typedef struct layer_result {
     uint32_t out[PVS_RESOLVE_MAX_OUTPUT];
     uint32_t count;
-    uint32_t spilled[64]; /* fronts P2 could not store (added to the PVS directly) */
+    uint32_t spilled[64]; /* fronts P2 could not store */
     uint32_t spilled_count;
+    uint32_t spill_out; /* how many of them pvs_spill_output adds to the PVS */
     bool overflowed;
 } layer_result;
 
@@ -44,6 +45,10 @@ static layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float
             r.spilled[r.spilled_count++] = items[i].id;
     }
     r.count = pvs_resolve_pixel(s, &k, r.out, &r.overflowed);
+    for (uint32_t i = 0, j = 0; i < n; i++) {
+        if (j < r.spilled_count && items[i].kind == TV_ENTRY_FRONT && items[i].id == r.spilled[j])
+            r.spill_out += pvs_spill_output(s, items[i].id, items[i].depth), j++;
+    }
     return r;
 }
 
@@ -241,7 +246,7 @@ static void test_overflow_keeps_every_front(void)
     pvs_pixel_state s = {0};
     layer_result r = run_layer(&s, items, n);
     TV_CHECK(r.overflowed);
-    TV_CHECK(r.spilled_count == 12 && r.count == TV_K_FRONT);
+    TV_CHECK(r.spilled_count == 12 && r.spill_out == 12 && r.count == TV_K_FRONT);
     bool all = true;
     for (uint32_t i = 0; i < TV_K_FRONT + 11; i++) {
         bool found = false;
@@ -259,8 +264,8 @@ static void test_overflow_keeps_every_front(void)
 }
 
 /* A terminator in front of every lost front seals the pixel as usual: the
- * lost fronts (already in the PVS through P2) lie behind it. Lost
- * candidates never send a pixel to the overflow state. */
+ * lost fronts lie behind it and stay out of the PVS. Lost candidates never
+ * send a pixel to the overflow state; at an open pixel they are output. */
 static void test_overflow_behind_terminator(void)
 {
     item items[TV_K_FRONT + 8];
@@ -272,9 +277,13 @@ static void test_overflow_behind_terminator(void)
         items[n++] = (item)F(2.0f + (float)i, 100 + i);
     pvs_pixel_state s = {0};
     layer_result r = run_layer(&s, items, n);
-    TV_CHECK(r.overflowed && r.spilled_count == 6);
+    TV_CHECK(r.overflowed && r.spilled_count == 6 && r.spill_out == 0); /* behind the terminator */
     CHECK_OUT(r, 1);
-    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 1.0f);
+    /* a lost candidate in front of the terminator would be output */
+    TV_CHECK(pvs_spill_output(&s, 7 | TV_ID_CANDIDATE, 0.8f) && !pvs_spill_output(&s, 7 | TV_ID_CANDIDATE, 1.2f));
+    pvs_pixel_state untrimmed = {0};
+    TV_CHECK(!pvs_spill_output(&untrimmed, 7 | TV_ID_CANDIDATE, 0.8f) && !pvs_spill_output(&untrimmed, 7, 0.8f));
 
     n = 0;
     items[n++] = (item)F(1.0f, 1);
@@ -285,7 +294,7 @@ static void test_overflow_behind_terminator(void)
         items[n++] = (item)C(2.0f + (float)i, 100 + i);
     pvs_pixel_state t = {0};
     r = run_layer(&t, items, n);
-    TV_CHECK(r.overflowed && r.spilled_count == 5);
+    TV_CHECK(r.overflowed && r.spilled_count == 5 && r.spill_out == 5); /* the pixel stays open */
     CHECK_OUT(r, 1); /* the stored candidates lie in the umbra */
     TV_CHECK(t.stencil == TV_STENCIL_TRIMMED);
 }
