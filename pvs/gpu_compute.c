@@ -138,7 +138,7 @@ static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
     uint32_t c[TV_PVS_C_PER_LAYER] = {0};
     for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_UMBRA; d += 4)
         c[d + 1] = 1; /* instanceCount */
-    c[TV_PVS_C_DRAW_SPILL + 1] = 1;
+    c[TV_PVS_C_DRAW_SPILL + 1] = c[TV_PVS_C_DRAW_SPILL_WIDE + 1] = 1;
     c[TV_PVS_C_DISPATCH + 1] = c[TV_PVS_C_DISPATCH + 2] = 1;
     vkCmdUpdateBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, 0, sizeof c, c);
 }
@@ -188,7 +188,7 @@ static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, int vis, pass_kin
     }
     if (what == PASS_SPILL)
         draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | TV_PVS_KIND_SPILL | (vis ? TV_PVS_KIND_WIDE : 0u),
-                      TV_PVS_C_DRAW_SPILL);
+                      vis ? TV_PVS_C_DRAW_SPILL_WIDE : TV_PVS_C_DRAW_SPILL);
     if (what == PASS_LAYER) {
         const uint32_t wide = vis ? TV_PVS_KIND_WIDE : 0u;
         draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | wide, TV_PVS_C_DRAW_FF);
@@ -281,7 +281,7 @@ static void record(pvs_context* ctx, VkCommandBuffer cmd)
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE]);
         vkCmdDispatchIndirect(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, TV_PVS_C_DISPATCH * sizeof(uint32_t));
         barrier(cmd);
-        render_pass(ctx, cmd, 0, PASS_SPILL); /* both empty unless P2 lost a front */
+        render_pass(ctx, cmd, 0, PASS_SPILL); /* both empty unless P3 asked for them */
         render_pass(ctx, cmd, 1, PASS_SPILL);
         barrier(cmd);
         timestamp(ctx, cmd, &ts);

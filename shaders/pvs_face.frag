@@ -42,27 +42,25 @@ bool covers_centre()
     return true;
 }
 
-// The spill draws after P3 (exact and dilated) at pixels whose front list
-// overflowed in this layer; they cannot tell a lost fragment from a stored
-// one, so they output what P3 may not have: every front and candidate of an
-// overflowed pixel, the candidates of a pixel left open, and those in front
-// of the terminator of a pixel P3 sealed. An untrimmed pixel needs nothing
-// (its visibility buffer holds its nearest face; P3 ignores its fronts).
+// The spill draws after P3 (exact and dilated; P3 requests them, see
+// request_spill) at pixels whose front list overflowed in this layer. They
+// cannot tell a lost fragment from a stored one, so they output what P3 may
+// not have: every front of an overflowed pixel that lost one, and the
+// candidates within P3's bound. An untrimmed pixel needs nothing (its
+// visibility buffer holds its nearest face; P3 ignores its fronts).
 void spill(uint p, float w, float slope)
 {
-    if (pixcount[p].x <= view.k)
+    if (pixcount[p].x <= view.k || pixstate[p].x == TV_STENCIL_UNTRIMMED)
         return;
-    uint state = pixstate[p].x;
     if ((pc.kind & TV_PVS_KIND_WIDE) == 0u) {
-        if (state == TV_STENCIL_OVERFLOW)
+        if (pixstate[p].x == TV_STENCIL_OVERFLOW && front_lost[2u * p] != 0x7F800000u)
             tri_flags[v_triangle] = 1u;
         return;
     }
     if (v_s2.z == 0.0 || covers_centre())
         return; // not a candidate: the exact spill draw's
     float depth = max(v_near, w - 0.5 * slope); // as P2 pushed it
-    if (state == TV_STENCIL_OVERFLOW || state == TV_STENCIL_TRIMMED ||
-        (state == TV_STENCIL_SEALED && depth < uintBitsToFloat(front_lost[2u * p + 1u])))
+    if (depth < uintBitsToFloat(front_lost[2u * p + 1u])) // P3's bound
         tri_flags[v_triangle] = 1u;
 }
 

@@ -38,9 +38,7 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
     if (kind == TV_PVS_KIND_FRONT) {
         slot = atomicAdd(pixcount[p].x, 1u);
         if (slot >= view.k) {
-            if ((id & TV_ID_CANDIDATE) == 0u)
-                atomicMin(front_lost[2u * p], d);
-            counters[TV_PVS_C_DRAW_SPILL] = counters[TV_PVS_C_DRAW_FF]; // P1 is done: a stable value
+            atomicMin(front_lost[2u * p + ((id & TV_ID_CANDIDATE) != 0u ? 1u : 0u)], d);
             return false;
         }
         kfront[p * view.k + slot] = uvec2(d, id);

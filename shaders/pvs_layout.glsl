@@ -28,7 +28,7 @@
 #define TV_PVS_BIND_LAYER_STATS 18 // uvec4 per layer: entries, active pixels, sequence sum, overflows
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
 #define TV_PVS_BIND_CENTRE_DEPTH 20 // 2 uints per pixel: nearest depth bits of the front / back faces covering its centre
-#define TV_PVS_BIND_FRONT_LOST 21 // 2 uints per pixel: nearest depth bits of the fronts (not candidates) the layer's k-buffer had no room for (P2), of the terminator that sealed the pixel (P3)
+#define TV_PVS_BIND_FRONT_LOST 21 // 2 uints per pixel: nearest depth bits of the fronts / of the candidates the layer's k-buffer had no room for (P2); P3 replaces the second by the candidate spill bound
 #define TV_PVS_BINDINGS        22
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
@@ -37,9 +37,10 @@
 
 // Slots of the counters buffer (uints). Four VkDrawIndirectCommand (FF, BF,
 // trim, umbra; vertexCount is bumped by P1 per primitive), one
-// VkDispatchIndirectCommand for P3, the active count, the spill draw (the
-// FF draw again, after P3; P2 copies FF's vertexCount into it when a front
-// is lost), then counters that live for a whole pvs_compute.
+// VkDispatchIndirectCommand for P3, the active count, the two spill draws
+// (the FF draw again after P3, exact and dilated; P3 copies FF's vertexCount
+// into them when a pixel needs them), then counters that live for a whole
+// pvs_compute.
 #define TV_PVS_C_DRAW_FF    0
 #define TV_PVS_C_DRAW_BF    4
 #define TV_PVS_C_DRAW_TRIM  8
@@ -47,10 +48,11 @@
 #define TV_PVS_C_DISPATCH   16
 #define TV_PVS_C_ACTIVE     19 // active pixels of the current layer
 #define TV_PVS_C_DRAW_SPILL 20
-#define TV_PVS_C_PER_LAYER  24 // slots [0, 24) are reset before every layer
-#define TV_PVS_C_REGIONS    24 // trim regions numbered so far
-#define TV_PVS_C_OVERFLOW_FRONTS 25
-#define TV_PVS_C_COUNT      28
+#define TV_PVS_C_DRAW_SPILL_WIDE 24
+#define TV_PVS_C_PER_LAYER  28 // slots [0, 28) are reset before every layer
+#define TV_PVS_C_REGIONS    28 // trim regions numbered so far
+#define TV_PVS_C_OVERFLOW_FRONTS 29
+#define TV_PVS_C_COUNT      32
 
 // Fragment kinds of P2 (push constant `kind`), = TV_ENTRY_* of config.h.
 #define TV_PVS_KIND_FRONT 1u

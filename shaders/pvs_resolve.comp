@@ -330,7 +330,6 @@ bool resolve_pixel(out uint seq_len)
         return true;
     }
     if (sealed) {
-        front_lost[2u * P + 1u] = floatBitsToUint(term_depth); // for the spill draw
         stencil = TV_STENCIL_SEALED;
         carry_count = 0u;
         hide_begin = hide_end = 0.0;
@@ -347,6 +346,23 @@ bool resolve_pixel(out uint seq_len)
         return true;
     }
     return false;
+}
+
+// Fragments P2 had no room for (pvs_spill_output of resolve.h): the exact
+// spill draw outputs every front of an overflowed pixel that lost a front;
+// the dilated one the candidates nearer than the bound left in
+// front_lost[2P + 1]: all of them at an overflowed or open pixel, those in
+// front of the terminator at a pixel sealed now, none otherwise.
+void request_spill()
+{
+    const float inf = uintBitsToFloat(0x7F800000u);
+    if (stencil == TV_STENCIL_OVERFLOW && front_lost[2u * P] != 0x7F800000u)
+        counters[TV_PVS_C_DRAW_SPILL] = counters[TV_PVS_C_DRAW_FF];
+    float bound = stencil == TV_STENCIL_SEALED ? term_depth : inf;
+    bool candidates = kdepth(front_lost[2u * P + 1u]) < bound;
+    front_lost[2u * P + 1u] = candidates ? floatBitsToUint(bound) : 0u;
+    if (candidates)
+        counters[TV_PVS_C_DRAW_SPILL_WIDE] = counters[TV_PVS_C_DRAW_FF];
 }
 
 void main()
@@ -367,8 +383,11 @@ void main()
         carry[c] = make_entry(uintBitsToFloat(e.x), e.y, e.z, 0);
     }
     n_out = 0u;
+    term_depth = 0.0;
     uint seq_len;
     bool overflowed = resolve_pixel(seq_len) || any(greaterThan(cnt, uvec4(view.k)));
+    if (cnt.x > view.k)
+        request_spill();
 
     pixstate[P] = uvec4(stencil, carry_count, floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
     for (uint c = 0u; c < carry_count; c++)
