@@ -142,6 +142,9 @@ static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err
     if (ok) {
         scn_weld_positions(remap, scene->positions, scene->vertex_count);
         scn_build_adjacency(adjacency, scene->indices, scene->triangle_count, remap);
+        size_t joined = scn_join_tjunctions(adjacency, scene->indices, scene->triangle_count, scene->positions);
+        tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges continue flat past a T-junction (not silhouettes)",
+               scene->name, joined);
         rnd_staging staging = {0};
         ok = rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size) &&
              rnd_upload_buffer(ctx->rnd, ctx->stream.cmd, &staging, adjacency,

@@ -47,6 +47,20 @@ size_t scn_weld_positions(uint32_t* remap, const float* positions, size_t vertex
 void scn_build_adjacency(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                          const uint32_t* remap);
 
+/* Map-compiled levels (OpenArena) split faces at T-junctions: a long edge of
+ * one triangle meets several shorter edges of its neighbours, so no edge is
+ * shared and every one of them is a border, hence a silhouette and a trim
+ * region, although the surface goes on. For each SCN_EDGE_BORDER edge that
+ * border edges of other triangles cover end to end, where those triangles
+ * lie in its triangle's plane with the same facing and on the other side of
+ * the edge, writes one of them into adjacency[] (a flat continuation: the
+ * two face the same way from every point, so the edge is never a
+ * silhouette). Edges it cannot prove covered stay borders (conservative).
+ * `positions` are the scene's, indices as for scn_build_adjacency. Returns
+ * the number of edges joined; 0 (nothing changed) if it cannot allocate. */
+size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                           const float* positions);
+
 #ifdef __cplusplus
 }
 #endif

@@ -93,6 +93,71 @@ static void test_adjacency_open_quad(void)
     TV_CHECK(adj[3] == 0 && adj[4] == SCN_EDGE_BORDER && adj[5] == SCN_EDGE_BORDER);
 }
 
+/* T-junctions: quad A = [0,2]x[0,1] meets quads B1 = [2,3]x[0,0.5] and
+ * B2 = [2,3]x[0.5,1] in the plane z = 0 (all facing +z, a soup). A's right
+ * edge and the left edges of B1 and B2 are borders; each is covered end to
+ * end by the others, so all three are joined. Variants: B2 missing (A's edge
+ * half covered: only B1's is joined), the Bs tilted out of the plane, facing
+ * -z, or lying over A instead of beside it: nothing is joined. */
+typedef struct tj_mesh {
+    float pos[3 * 18];
+    uint32_t idx[18], adj[18];
+    uint32_t tris;
+} tj_mesh;
+
+static void tj_quad(tj_mesh* m, float x0, float y0, float x1, float y1, float z_tilt, bool flip)
+{
+    const float c[4][3] = {{x0, y0, 0}, {x1, y0, (x1 - x0) * z_tilt}, {x1, y1, (x1 - x0) * z_tilt}, {x0, y1, 0}};
+    const int order[2][6] = {{0, 1, 2, 0, 2, 3}, {0, 2, 1, 0, 3, 2}};
+    for (int i = 0; i < 6; i++) {
+        uint32_t v = 3 * m->tris + (uint32_t)i;
+        memcpy(m->pos + 3 * v, c[order[flip][i]], sizeof(float) * 3);
+        m->idx[v] = v;
+    }
+    m->tris += 2;
+}
+
+static size_t tj_join(tj_mesh* m)
+{
+    uint32_t remap[18];
+    scn_weld_positions(remap, m->pos, 3 * m->tris);
+    scn_build_adjacency(m->adj, m->idx, m->tris, remap);
+    return scn_join_tjunctions(m->adj, m->idx, m->tris, m->pos);
+}
+
+static void test_join_tjunctions(void)
+{
+    tj_mesh m = {0};
+    tj_quad(&m, 0, 0, 2, 1, 0, false);
+    tj_quad(&m, 2, 0, 3, 0.5f, 0, false);
+    tj_quad(&m, 2, 0.5f, 3, 1, 0, false);
+    TV_CHECK(tj_join(&m) == 3);
+    TV_CHECK(m.adj[1] == 3 || m.adj[1] == 5); /* A's right edge: now the second triangle of B1 or B2 */
+
+    tj_mesh half = {0};
+    tj_quad(&half, 0, 0, 2, 1, 0, false);
+    tj_quad(&half, 2, 0, 3, 0.5f, 0, false);
+    TV_CHECK(tj_join(&half) == 1 && half.adj[1] == SCN_EDGE_BORDER);
+
+    tj_mesh tilted = {0};
+    tj_quad(&tilted, 0, 0, 2, 1, 0, false);
+    tj_quad(&tilted, 2, 0, 3, 0.5f, 0.2f, false);
+    tj_quad(&tilted, 2, 0.5f, 3, 1, 0.2f, false);
+    TV_CHECK(tj_join(&tilted) == 0);
+
+    tj_mesh flipped = {0};
+    tj_quad(&flipped, 0, 0, 2, 1, 0, false);
+    tj_quad(&flipped, 2, 0, 3, 0.5f, 0, true);
+    tj_quad(&flipped, 2, 0.5f, 3, 1, 0, true);
+    TV_CHECK(tj_join(&flipped) == 0);
+
+    tj_mesh over = {0};
+    tj_quad(&over, 0, 0, 2, 1, 0, false);
+    tj_quad(&over, 1, 0, 2, 0.5f, 0, false);
+    tj_quad(&over, 1, 0.5f, 2, 1, 0, false);
+    TV_CHECK(tj_join(&over) == 0);
+}
+
 static void test_adjacency_fin(void)
 {
     /* three triangles on the edge (0,0,0)-(0,1,0): non-manifold; the rest border */
@@ -157,5 +222,6 @@ int main(void)
     TV_TEST_RUN(test_adjacency_fin);
     TV_TEST_RUN(test_adjacency_mixed_winding_and_degenerate);
     TV_TEST_RUN(test_adjacency_grid_scale);
+    TV_TEST_RUN(test_join_tjunctions);
     return tv_test_finish();
 }
