@@ -102,7 +102,7 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_LAYER_TRIS, tris * 4},
         {TV_PVS_BIND_COUNTERS, TV_PVS_C_COUNT * 4},
         {TV_PVS_BIND_KFRONT, slots * 8},
-        {TV_PVS_BIND_KBACK, slots * 4},
+        {TV_PVS_BIND_KBACK, slots * 8},
         {TV_PVS_BIND_KTRIM, slots * 8},
         {TV_PVS_BIND_KUMBRA, slots * 8},
         {TV_PVS_BIND_PIXCOUNT, pixels * 16},

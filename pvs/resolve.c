@@ -70,6 +70,7 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id)
         if (!claim(&kbuf->back_count, TV_K_BACK, &s))
             return false;
         kbuf->back_depth[s] = depth;
+        kbuf->back_tri[s] = id;
         return true;
     case TV_ENTRY_TRIM:
         if (!claim(&kbuf->trim_count, TV_K_TRIM, &s))
@@ -118,6 +119,8 @@ static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t
     }
     for (uint32_t i = 0; i < min_u32(k->front_count, TV_K_FRONT); i++)
         emit(out, &n, k->front_tri[i]);
+    for (uint32_t i = 0; i < min_u32(k->back_count, TV_K_BACK); i++)
+        emit(out, &n, k->back_tri[i]);
     s->stencil = TV_STENCIL_OVERFLOW;
     s->carry_count = 0;
     s->hide_begin = s->hide_end = 0.0f;
@@ -180,7 +183,7 @@ static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, bool first, 
     for (uint32_t i = 0; i < min_u32(k->front_count, TV_K_FRONT); i++)
         seq[n++] = make_entry(k->front_depth[i], TV_ENTRY_FRONT, k->front_tri[i], 0);
     for (uint32_t i = 0; i < min_u32(k->back_count, TV_K_BACK); i++)
-        seq[n++] = make_entry(k->back_depth[i], TV_ENTRY_BACK, 0, 0);
+        seq[n++] = make_entry(k->back_depth[i], TV_ENTRY_BACK, k->back_tri[i], 0);
     for (uint32_t i = 0; i < min_u32(k->trim_count, TV_K_TRIM); i++)
         seq[n++] = make_entry(k->trim_depth[i], TV_ENTRY_TRIM, k->trim_region[i], 0);
     sort_entries(seq, n);
@@ -304,7 +307,10 @@ static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out
             continue; /* trims, range markers, and faces hidden by an umbra */
         if (e->kind == TV_ENTRY_FRONT && e->interval < 0)
             return false; /* the unfinished trailing run: carried, not a terminator */
-        if (e->kind == TV_ENTRY_FRONT)
+        /* A lone back (no front before it: a single-sided surface seen from
+         * behind) is visible, as the renderer culls no faces; the back of a
+         * run whose front lies in an umbra is hidden by that front. */
+        if (e->kind == TV_ENTRY_FRONT || e->interval < 0)
             emit(out, n_out, e->id);
         *term = e->depth;
         return true;

@@ -22,8 +22,9 @@
  * prefix sum > 0 hides an entry. Walking front to back, the fronts of every
  * validated interval are output unless its first front is hidden; the first
  * visible front or back outside a validated interval is the terminator (a
- * front terminator is output) and seals the pixel; a trailing run of fronts
- * without a back is carried, not a terminator.
+ * front terminator is output, and so is a lone back: a single-sided surface
+ * seen from behind, which the renderer draws) and seals the pixel; a
+ * trailing run of fronts without a back is carried, not a terminator.
  *
  * Candidate fronts (front id | TV_ID_CANDIDATE: the triangle touches the
  * pixel without covering its centre) take no part in intervals and never
@@ -74,7 +75,7 @@ extern "C" {
 #endif
 
 /* Most triangle ids one pvs_resolve_pixel call can output. */
-#define PVS_RESOLVE_MAX_OUTPUT (TV_K_FRONT + TV_K_CARRY)
+#define PVS_RESOLVE_MAX_OUTPUT (TV_K_FRONT + TV_K_BACK + TV_K_CARRY)
 
 /* The four k-buffers of one pixel for the current layer. */
 typedef struct pvs_kbuf {
@@ -82,6 +83,7 @@ typedef struct pvs_kbuf {
     float front_depth[TV_K_FRONT];
     uint32_t front_tri[TV_K_FRONT];
     float back_depth[TV_K_BACK];
+    uint32_t back_tri[TV_K_BACK];
     float trim_depth[TV_K_TRIM];
     uint32_t trim_region[TV_K_TRIM];
     float umbra_depth[TV_K_UMBRA];
@@ -95,8 +97,8 @@ typedef struct pvs_kbuf {
     float front_lost;
 } pvs_kbuf;
 
-/* One trim-sequence entry. id: triangle id for fronts, trim-region id for
- * trims and umbrae. */
+/* One trim-sequence entry. id: triangle id for fronts and backs, trim-region
+ * id for trims and umbrae. */
 typedef struct pvs_entry {
     float depth;
     uint32_t kind; /* TV_ENTRY_* */

@@ -27,7 +27,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_BF) PVS_RW buffer pvs_bf_
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_SIL) PVS_RW buffer pvs_sil_buf { vec4 sil[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_COUNTERS) PVS_RW coherent buffer pvs_counter_buf { uint counters[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KFRONT) PVS_RW buffer pvs_kfront_buf { uvec2 kfront[]; };
-layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KBACK) PVS_RW buffer pvs_kback_buf { uint kback[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KBACK) PVS_RW buffer pvs_kback_buf { uvec2 kback[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KTRIM) PVS_RW buffer pvs_ktrim_buf { uvec2 ktrim[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KUMBRA) PVS_RW buffer pvs_kumbra_buf { uvec2 kumbra[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_PIXCOUNT) PVS_RW coherent buffer pvs_pixcount_buf { uvec4 pixcount[]; };

@@ -46,7 +46,7 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
         slot = atomicAdd(pixcount[p].y, 1u);
         if (slot >= view.k)
             return false;
-        kback[p * view.k + slot] = d;
+        kback[p * view.k + slot] = uvec2(d, id);
     } else if (kind == TV_PVS_KIND_TRIM) {
         slot = atomicAdd(pixcount[p].z, 1u);
         if (slot >= view.k)

@@ -73,6 +73,8 @@ void resolve_overflow()
             output_id(carry[i].id);
     for (uint i = 0u; i < min(cnt.x, view.k); i++)
         output_id(kfront[KB + i].y);
+    for (uint i = 0u; i < min(cnt.y, view.k); i++)
+        output_id(kback[KB + i].y);
     stencil = TV_STENCIL_OVERFLOW;
     carry_count = 0u;
     hide_begin = hide_end = 0.0;
@@ -101,7 +103,7 @@ bool stored_face(uint kind, uint depth_bits)
 {
     uint n = min(kind == TV_ENTRY_FRONT ? cnt.x : cnt.y, view.k);
     for (uint i = 0u; i < n; i++)
-        if ((kind == TV_ENTRY_FRONT ? kfront[KB + i].x : kback[KB + i]) == depth_bits)
+        if ((kind == TV_ENTRY_FRONT ? kfront[KB + i].x : kback[KB + i].x) == depth_bits)
             return true;
     return false;
 }
@@ -123,7 +125,7 @@ uint gather(bool first)
     for (uint i = 0u; i < min(cnt.x, view.k); i++)
         seq[n++] = make_entry(kdepth(kfront[KB + i].x), TV_ENTRY_FRONT, kfront[KB + i].y, 0);
     for (uint i = 0u; i < min(cnt.y, view.k); i++)
-        seq[n++] = make_entry(kdepth(kback[KB + i]), TV_ENTRY_BACK, 0u, 0);
+        seq[n++] = make_entry(kdepth(kback[KB + i].x), TV_ENTRY_BACK, kback[KB + i].y, 0);
     for (uint i = 0u; i < min(cnt.z, view.k); i++)
         seq[n++] = make_entry(kdepth(ktrim[KB + i].x), TV_ENTRY_TRIM, ktrim[KB + i].y, 0);
     for (uint i = 1u; i < n; i++) { // insertion sort
@@ -234,7 +236,10 @@ bool walk(uint m)
             continue;
         if (e.kind == TV_ENTRY_FRONT && e.interval < 0)
             return false;
-        if (e.kind == TV_ENTRY_FRONT)
+        // A lone back (no front before it: a single-sided surface seen from
+        // behind) is visible, as the renderer culls no faces; the back of a
+        // run whose front lies in an umbra is hidden by that front.
+        if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
             output_id(e.id);
         term_depth = e.depth;
         return true;
@@ -393,7 +398,7 @@ void main()
     for (uint c = 0u; c < carry_count; c++)
         carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
     uvec4 stored = min(cnt, uvec4(view.k));
-    atomicAdd(layer_stats[pc.layer].x, 8u * (stored.x + stored.z + stored.w) + 4u * stored.y); // bytes
+    atomicAdd(layer_stats[pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w)); // bytes
     atomicAdd(layer_stats[pc.layer].y, 1u);
     atomicAdd(layer_stats[pc.layer].z, seq_len);
     if (overflowed)

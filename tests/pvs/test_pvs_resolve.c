@@ -16,8 +16,10 @@ typedef struct item {
     uint32_t id;
 } item;
 
+#define BACK_ID 500u
 #define F(d, id) {TV_ENTRY_FRONT, d, id}
-#define B(d) {TV_ENTRY_BACK, d, 0}
+#define B(d) {TV_ENTRY_BACK, d, BACK_ID} /* every back is one triangle: its id only matters when output */
+#define BI(d, id) {TV_ENTRY_BACK, d, id}
 #define T(d, r) {TV_ENTRY_TRIM, d, r}
 #define U(d, r) {TV_ENTRY_UMBRA, d, r}
 
@@ -179,7 +181,7 @@ static void test_soup_consecutive_faces(void)
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
     pvs_pixel_state s2 = {0};
     layer_result r2 = RUN(s2, F(1.0f, 1), T(1.2f, 7), B(1.5f), U(1.55f, 7), B(1.6f), F(4.0f, 3), B(5.0f));
-    CHECK_OUT(r2, 1); /* b at 1.6 lies behind the umbra: terminator */
+    CHECK_OUT(r2, 1, BACK_ID); /* b at 1.6 lies behind the umbra: a lone back, the terminator (output) */
     TV_CHECK(s2.stencil == TV_STENCIL_SEALED);
     /* The trim only validates its own interval: f2's interval has none. */
     pvs_pixel_state s3 = {0};
@@ -215,8 +217,24 @@ static void test_carry_trim_and_umbra(void)
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
 }
 
+/* A single-sided surface seen from behind past an occluder's edge: its back
+ * face is the terminator and is output (the renderer draws back faces);
+ * the back of a box whose front lies in the umbra is not. */
+static void test_lone_back_output(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 7), B(1.5f), U(3.0f, 7), BI(4.0f, 42));
+    CHECK_OUT(r, 1, 42);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    pvs_pixel_state t = {0};
+    r = RUN(t, F(1.0f, 1), T(1.2f, 7), B(1.5f), U(3.0f, 7), F(2.5f, 2), BI(4.0f, 43));
+    CHECK_OUT(r, 1);
+    TV_CHECK(t.stencil == TV_STENCIL_SEALED);
+}
+
 /* Without any trim fragment an untrimmed pixel is the visibility buffer's;
- * a trimmed pixel with a lone back face is sealed. */
+ * a trimmed pixel with a lone back face is sealed, the back output (a
+ * single-sided surface seen from behind). */
 static void test_fast_paths(void)
 {
     pvs_pixel_state s = {0};
@@ -225,7 +243,7 @@ static void test_fast_paths(void)
     TV_CHECK(s.stencil == TV_STENCIL_UNTRIMMED);
     pvs_pixel_state t = {.stencil = TV_STENCIL_TRIMMED};
     layer_result r2 = RUN(t, B(2.0f), F(3.0f, 2), B(4.0f));
-    CHECK_NONE(r2);
+    CHECK_OUT(r2, BACK_ID);
     TV_CHECK(t.stencil == TV_STENCIL_SEALED);
 }
 
@@ -246,7 +264,7 @@ static void test_overflow_keeps_every_front(void)
     pvs_pixel_state s = {0};
     layer_result r = run_layer(&s, items, n);
     TV_CHECK(r.overflowed);
-    TV_CHECK(r.spilled_count == 12 && r.spill_out == 12 && r.count == TV_K_FRONT);
+    TV_CHECK(r.spilled_count == 12 && r.spill_out == 12 && r.count == TV_K_FRONT + 1); /* + the back */
     bool all = true;
     for (uint32_t i = 0; i < TV_K_FRONT + 11; i++) {
         bool found = false;
@@ -259,7 +277,7 @@ static void test_overflow_keeps_every_front(void)
     TV_CHECK(all);
     TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW);
     layer_result r2 = RUN(s, F(50.0f, 7), B(51.0f), F(52.0f, 8), B(53.0f));
-    CHECK_OUT(r2, 7, 8); /* 7 would have terminated a normal pixel */
+    CHECK_OUT(r2, 7, 8, BACK_ID, BACK_ID); /* 7 would have terminated a normal pixel */
     TV_CHECK(r2.overflowed && s.stencil == TV_STENCIL_OVERFLOW);
 }
 
@@ -363,7 +381,7 @@ static void test_overflow_back_list(void)
     pvs_pixel_state s = {0};
     layer_result r = run_layer(&s, items, n);
     TV_CHECK(r.overflowed);
-    CHECK_OUT(r, 1, 2);
+    CHECK_OUT(r, 1, 2, BACK_ID); /* the first filler is a lone back: the terminator */
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
 }
 
@@ -498,6 +516,7 @@ int main(void)
     TV_TEST_RUN(test_interpenetrating);
     TV_TEST_RUN(test_carry_trim_and_umbra);
     TV_TEST_RUN(test_fast_paths);
+    TV_TEST_RUN(test_lone_back_output);
     TV_TEST_RUN(test_overflow_keeps_every_front);
     TV_TEST_RUN(test_overflow_behind_terminator);
     TV_TEST_RUN(test_overflow_umbra_list);
