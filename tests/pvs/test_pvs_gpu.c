@@ -516,6 +516,17 @@ static void test_occluders_across_layers(void)
     check_configuration(&f, "umbra inside an umbra, 4 triangles per leaf", 0.1f, FN_SIMPLE, hidden, 2, &beside, 1);
 }
 
+static void test_back_face_past_an_edge(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -3.0f, -2.0f, -4.2f, 0.5f, 2.0f, -4.0f, m);
+    uint32_t quad = f.scene.triangle_count;
+    const float away[4][3] = {{0.9f, -0.5f, -8.0f}, {0.75f, -0.5f, -8.0f}, {0.75f, 0.5f, -8.0f}, {0.9f, 0.5f, -8.0f}};
+    fx_quad(&f.scene, away, m);
+    check_configuration(&f, "back face past an occluder's edge", 0.3f, FN_SIMPLE, NULL, 0, &quad, 1);
+}
+
 /* A 0.2 m square hole near the edge of the 60-degree target view (which
  * ends at x = 1.73 at this depth): the box seen through it must be kept,
  * one behind the solid part culled. The hole's 5 cm side walls are seen
@@ -653,6 +664,7 @@ int main(void)
     TV_TEST_RUN(test_thin_walls);
     TV_TEST_RUN(test_umbra_inside_umbra);
     TV_TEST_RUN(test_occluders_across_layers);
+    TV_TEST_RUN(test_back_face_past_an_edge);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_tiny_k_overflow);
