@@ -35,9 +35,9 @@
  * Overflow policy (never lose a visible front), per list:
  * - fronts: P2 keeps the nearest depth of the fronts that find the list full
  *   (front_lost; pvs_kbuf_push tells the caller, who decides with
- *   pvs_spill_output after the resolve whether to add them to the PVS). The sequence is complete in front of that depth: a
- *   terminator found there seals the pixel as usual, the lost fronts lying
- *   behind it. Otherwise a lost front could have opened an interval whose
+ *   pvs_spill_output after the resolve whether to add them to the PVS).
+ *   The sequence is complete in front of that depth: a terminator found
+ *   there seals the pixel as usual, the lost fronts lying behind it. Otherwise a lost front could have opened an interval whose
  *   back now looks like a terminator, in this or a later layer, so the pixel
  *   becomes TV_STENCIL_OVERFLOW: all its stored and carried fronts are
  *   output, and in every later layer all fronts are output and the pixel is

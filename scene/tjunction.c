@@ -2,6 +2,7 @@
  * (see scn_join_tjunctions in weld.h). */
 #include "weld.h"
 
+#include <cglm/cglm.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
@@ -14,59 +15,44 @@
 
 typedef struct tj_edge {
     uint32_t tri, corner;
-    float p0[3], p1[3];
+    vec3 p0, p1;
     uint64_t key; /* quantised line: direction and closest point to the origin */
 } tj_edge;
 
-static void sub3(const float* a, const float* b, float* o)
+static void corner_pos(const float* positions, const uint32_t* indices, uint32_t tri, uint32_t c, vec3 out)
 {
-    o[0] = a[0] - b[0], o[1] = a[1] - b[1], o[2] = a[2] - b[2];
-}
-
-static float dot3(const float* a, const float* b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const float* a, const float* b, float* o)
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static const float* corner_pos(const float* positions, const uint32_t* indices, uint32_t tri, uint32_t c)
-{
-    return positions + 3 * (size_t)indices[3 * tri + c];
+    memcpy(out, positions + 3 * (size_t)indices[3 * tri + c], sizeof(vec3));
 }
 
 /* Unit normal of a triangle; false when degenerate. */
-static bool tri_normal(const float* positions, const uint32_t* indices, uint32_t tri, float n[3])
+static bool tri_normal(const float* positions, const uint32_t* indices, uint32_t tri, vec3 n)
 {
-    float e1[3], e2[3];
-    sub3(corner_pos(positions, indices, tri, 1), corner_pos(positions, indices, tri, 0), e1);
-    sub3(corner_pos(positions, indices, tri, 2), corner_pos(positions, indices, tri, 0), e2);
-    cross3(e1, e2, n);
-    float len = sqrtf(dot3(n, n));
+    vec3 p[3];
+    for (uint32_t c = 0; c < 3; c++)
+        corner_pos(positions, indices, tri, c, p[c]);
+    glm_vec3_sub(p[1], p[0], p[1]);
+    glm_vec3_sub(p[2], p[0], p[2]);
+    glm_vec3_cross(p[1], p[2], n);
+    float len = glm_vec3_norm(n);
     if (!(len > 0.0f))
         return false;
-    n[0] /= len, n[1] /= len, n[2] /= len;
+    glm_vec3_divs(n, len, n);
     return true;
 }
 
 /* Lines are bucketed by direction (sign-canonical, 1/64 steps) and by the
  * point nearest the origin (5 cm steps). Two collinear edges whose keys fall
  * on either side of a step boundary are not joined: only conservative. */
-static uint64_t line_key(const float* p0, const float* p1)
+static uint64_t line_key(vec3 p0, vec3 p1)
 {
-    float d[3];
-    sub3(p1, p0, d);
-    float len = sqrtf(dot3(d, d));
-    d[0] /= len, d[1] /= len, d[2] /= len;
+    vec3 d, o;
+    glm_vec3_sub(p1, p0, d);
+    glm_vec3_normalize(d);
     int big = fabsf(d[0]) >= fabsf(d[1]) && fabsf(d[0]) >= fabsf(d[2]) ? 0 : fabsf(d[1]) >= fabsf(d[2]) ? 1 : 2;
     if (d[big] < 0.0f)
-        d[0] = -d[0], d[1] = -d[1], d[2] = -d[2];
-    float t = dot3(p0, d), o[3] = {p0[0] - t * d[0], p0[1] - t * d[1], p0[2] - t * d[2]};
+        glm_vec3_negate(d);
+    glm_vec3_scale(d, -glm_vec3_dot(p0, d), o);
+    glm_vec3_add(p0, o, o);
     uint64_t h = 1469598103934665603ull;
     for (int i = 0; i < 3; i++) {
         int32_t q[2] = {(int32_t)lrintf(d[i] * 64.0f), (int32_t)lrintf(o[i] * 20.0f)};
@@ -95,32 +81,34 @@ static int compare_span(const void* a, const void* b)
 /* Whether edge b (of another triangle) continues edge a's surface: on a's
  * line, its triangle in a's plane with the same facing, on the other side
  * of the line. Writes b's extent along a (t = 0 at a.p0, 1 at a.p1). */
-static bool continues(const float* positions, const uint32_t* indices, const tj_edge* a, const float na[3],
-                      const tj_edge* b, tj_span* span)
+static bool continues(const float* positions, const uint32_t* indices, tj_edge* a, vec3 na, tj_edge* b,
+                      tj_span* span)
 {
-    float d[3], len;
-    sub3(a->p1, a->p0, d);
-    len = sqrtf(dot3(d, d));
+    vec3 d;
+    glm_vec3_sub(a->p1, a->p0, d);
+    float len = glm_vec3_norm(d);
     float eps = TJ_LINE_EPS * len;
-    const float* bp[2] = {b->p0, b->p1};
+    float* bp[2] = {b->p0, b->p1};
     float t[2];
     for (int i = 0; i < 2; i++) {
-        float r[3], c[3];
-        sub3(bp[i], a->p0, r);
-        cross3(d, r, c);
-        if (sqrtf(dot3(c, c)) / len > eps) /* distance from a's line */
+        vec3 r, c;
+        glm_vec3_sub(bp[i], a->p0, r);
+        glm_vec3_cross(d, r, c);
+        if (glm_vec3_norm(c) / len > eps) /* distance from a's line */
             return false;
-        t[i] = dot3(r, d) / (len * len);
+        t[i] = glm_vec3_dot(r, d) / (len * len);
     }
-    float nb[3];
-    if (!tri_normal(positions, indices, b->tri, nb) || dot3(na, nb) < TJ_NORMAL_COS)
+    vec3 nb;
+    if (!tri_normal(positions, indices, b->tri, nb) || glm_vec3_dot(na, nb) < TJ_NORMAL_COS)
         return false;
     /* the third corners lie on opposite sides of the line, within the plane */
-    float side[3], ra[3], rb[3];
-    cross3(na, d, side);
-    sub3(corner_pos(positions, indices, a->tri, (a->corner + 2) % 3), a->p0, ra);
-    sub3(corner_pos(positions, indices, b->tri, (b->corner + 2) % 3), a->p0, rb);
-    if (fabsf(dot3(na, rb)) > eps || dot3(side, ra) * dot3(side, rb) >= 0.0f)
+    vec3 side, ra, rb;
+    glm_vec3_cross(na, d, side);
+    corner_pos(positions, indices, a->tri, (a->corner + 2) % 3, ra);
+    corner_pos(positions, indices, b->tri, (b->corner + 2) % 3, rb);
+    glm_vec3_sub(ra, a->p0, ra);
+    glm_vec3_sub(rb, a->p0, rb);
+    if (fabsf(glm_vec3_dot(na, rb)) > eps || glm_vec3_dot(side, ra) * glm_vec3_dot(side, rb) >= 0.0f)
         return false;
     span->t0 = fminf(t[0], t[1]);
     span->t1 = fmaxf(t[0], t[1]);
@@ -146,11 +134,9 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
             if (adjacency[3 * t + c] != SCN_EDGE_BORDER)
                 continue;
             tj_edge* e = &edges[n];
-            memcpy(e->p0, corner_pos(positions, indices, t, c), sizeof e->p0);
-            memcpy(e->p1, corner_pos(positions, indices, t, (c + 1) % 3), sizeof e->p1);
-            float d[3];
-            sub3(e->p1, e->p0, d);
-            if (!(dot3(d, d) > 0.0f))
+            corner_pos(positions, indices, t, c, e->p0);
+            corner_pos(positions, indices, t, (c + 1) % 3, e->p1);
+            if (!(glm_vec3_distance2(e->p0, e->p1) > 0.0f))
                 continue;
             e->tri = t, e->corner = c, e->key = line_key(e->p0, e->p1);
             n++;
@@ -162,7 +148,7 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
         for (hi = lo + 1; hi < n && edges[hi].key == edges[lo].key; hi++)
             ;
         for (size_t i = lo; i < hi; i++) {
-            float na[3];
+            vec3 na;
             if (!tri_normal(positions, indices, edges[i].tri, na))
                 continue;
             size_t m = 0;
