@@ -17,8 +17,8 @@ static void print_tr_stats(const pvs_stats* s)
            s->ms[2], s->ms[3], s->ms[4], s->total_ms);
     printf("layers            %u (%u triangles in layers, %u trim regions)\n", s->layers, s->layer_triangles,
            s->silhouettes);
-    printf("active pixels     %llu (summed over layers), mean trim sequence %.2f\n",
-           (unsigned long long)s->active_pixels, s->mean_sequence);
+    printf("active pixels     %llu (summed over layers), mean trim sequence %.2f, %llu sorted by a workgroup\n",
+           (unsigned long long)s->active_pixels, s->mean_sequence, (unsigned long long)s->coop_pixels);
     printf("k-buffers         %.1f MiB allocated, %.1f MiB used (largest layer)\n", s->kbuffer_bytes / 1048576.0,
            s->kbuffer_bytes_used / 1048576.0);
     printf("overflow          %llu pixels, %llu front fragments (handled conservatively)\n",
@@ -30,7 +30,7 @@ int tv_cmd_pvs(int argc, char** argv)
     const char *scene = NULL, *method = "tr", *ids_out = NULL;
     float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
-    int k = 0;
+    int k = 0, coop_min = 0;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
@@ -40,6 +40,8 @@ int tv_cmd_pvs(int argc, char** argv)
         {"fov-pvs", TV_ARG_FLOAT, &fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
         {"res", TV_ARG_RES, res, "WxH", "PVS resolution (default 512x512)"},
         {"k", TV_ARG_INT, &k, "N", "tr: k-buffer slots per pixel and kind (default 16)"},
+        {"coop-min", TV_ARG_INT, &coop_min, "N",
+         "tr: sort trim sequences of >= N entries with a workgroup per pixel (default 8; 1000: never)"},
         {"method", TV_ARG_STRING, &method, "M", "tr, gt, sas, frompoint or q3vis (default tr)"},
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
     };
@@ -48,11 +50,12 @@ int tv_cmd_pvs(int argc, char** argv)
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;
     /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
-    pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k},
+    pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k,
+                                 .coop_sort_min = (uint32_t)coop_min},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
     if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc) ||
-        k < 0) {
+        k < 0 || coop_min < 0) {
         fprintf(stderr, "trimvr pvs: error: need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "
                         "FOVs in (0, 180) (see trimvr pvs --help)\n");
         return 2;

@@ -141,6 +141,7 @@ static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
     c[TV_PVS_C_DRAW_SPILL + 1] = c[TV_PVS_C_DRAW_SPILL_WIDE + 1] = 1;
     c[TV_PVS_C_DRAW_TRIM + 1] = 2; /* midpoint and nearer trim depths (pvs_quad.vert) */
     c[TV_PVS_C_DISPATCH + 1] = c[TV_PVS_C_DISPATCH + 2] = 1;
+    c[TV_PVS_C_DISPATCH_COOP + 1] = c[TV_PVS_C_DISPATCH_COOP + 2] = 1;
     vkCmdUpdateBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, 0, sizeof c, c);
 }
 
@@ -282,6 +283,10 @@ static void record(pvs_context* ctx, VkCommandBuffer cmd)
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE]);
         vkCmdDispatchIndirect(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, TV_PVS_C_DISPATCH * sizeof(uint32_t));
         barrier(cmd);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE_GROUP]);
+        vkCmdDispatchIndirect(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer,
+                              TV_PVS_C_DISPATCH_COOP * sizeof(uint32_t)); /* empty unless pixels were deferred */
+        barrier(cmd);
         render_pass(ctx, cmd, 0, PASS_SPILL); /* both empty unless P3 asked for them */
         render_pass(ctx, cmd, 1, PASS_SPILL);
         barrier(cmd);
@@ -349,6 +354,7 @@ static void collect_stats(pvs_context* ctx, pvs_stats* st)
     st->layer_triangles = ctx->layers.tri_count;
     st->silhouettes = c[TV_PVS_C_REGIONS];
     st->overflow_fronts = c[TV_PVS_C_OVERFLOW_FRONTS];
+    st->coop_pixels = c[TV_PVS_C_COOP_TOTAL];
     uint64_t seq = 0;
     for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
         const uint32_t* s = ls + 4 * l;

@@ -29,8 +29,8 @@ typedef struct pvs_push {
     uint32_t kind;         /* TV_PVS_KIND_* for the P2 pipelines */
 } pvs_push;
 
-enum { PVS_PIPE_CLASSIFY, PVS_PIPE_RESOLVE, PVS_PIPE_GATHER, PVS_PIPE_FF, PVS_PIPE_BF, PVS_PIPE_TRIM,
-       PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
+enum { PVS_PIPE_CLASSIFY, PVS_PIPE_RESOLVE, PVS_PIPE_RESOLVE_GROUP, PVS_PIPE_GATHER, PVS_PIPE_FF, PVS_PIPE_BF,
+       PVS_PIPE_TRIM, PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
 
 /* Buffers indexed by their binding (TV_PVS_BIND_*; VIS_IDS and VIS_WIDE
  * are images). */
@@ -38,6 +38,8 @@ struct pvs_context {
     rnd_context* rnd;
     const rnd_gpu_scene* gpu;
     uint32_t width, height, k;
+    uint32_t coop_sort_min; /* specialisation constants of P3's per-thread pass ... */
+    uint32_t coop_width;    /* ... and of its cooperative pass: workgroup size = subgroup size */
     float near_m;
     uint32_t triangle_count;
 
@@ -66,7 +68,7 @@ struct pvs_context {
 #define PVS_VIS_ID_FORMAT VK_FORMAT_R32_UINT
 #define PVS_VIS_DEPTH_FORMAT VK_FORMAT_D32_SFLOAT
 
-/* gpu_pipelines.c: the set layout, pipeline layout and the seven pipelines. */
+/* gpu_pipelines.c: the set layout, pipeline layout and the eight pipelines. */
 bool pvs_pipelines_create(pvs_context* ctx, char* err, size_t err_size);
 void pvs_pipelines_destroy(pvs_context* ctx);
 

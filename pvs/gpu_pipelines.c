@@ -1,5 +1,6 @@
 /* gpu_pipelines.c - descriptor set layout, pipeline layout and the pipelines
- * of the PVS passes: three compute (P1 classify, P3 resolve, P4 gather) and
+ * of the PVS passes: four compute (P1 classify, P3 resolve per thread and
+ * per workgroup, P4 gather) and
  * four raster pipelines of P2 sharing one dynamic-rendering format (the
  * visibility buffer's id + depth attachments). */
 #include "gpu_internal.h"
@@ -11,6 +12,7 @@
 #include "pvs_quad_frag.spv.h"
 #include "pvs_quad_vert.spv.h"
 #include "pvs_resolve_comp.spv.h"
+#include "pvs_resolve_group_comp.spv.h"
 
 static const VkShaderStageFlags all_stages =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
@@ -43,8 +45,8 @@ static bool create_layouts(pvs_context* ctx, char* err, size_t err_size)
     return RND_VK_OK(vkCreatePipelineLayout(dev, &layout, NULL, &ctx->layout), err, err_size);
 }
 
-static bool create_compute(pvs_context* ctx, const uint32_t* code, size_t size, VkPipeline* out, char* err,
-                           size_t err_size)
+static bool create_compute(pvs_context* ctx, const uint32_t* code, size_t size,
+                           const VkSpecializationInfo* spec, VkPipeline* out, char* err, size_t err_size)
 {
     VkShaderModule module = rnd_shader_module(ctx->rnd, code, size, err, err_size);
     if (!module)
@@ -53,7 +55,8 @@ static bool create_compute(pvs_context* ctx, const uint32_t* code, size_t size, 
                                         .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                                                   .stage = VK_SHADER_STAGE_COMPUTE_BIT,
                                                   .module = module,
-                                                  .pName = "main"},
+                                                  .pName = "main",
+                                                  .pSpecializationInfo = spec},
                                         .layout = ctx->layout};
     bool ok = RND_VK_OK(vkCreateComputePipelines(ctx->rnd->device, VK_NULL_HANDLE, 1, &info, NULL, out), err,
                         err_size);
@@ -104,12 +107,17 @@ static bool create_rasters(pvs_context* ctx, char* err, size_t err_size)
 
 bool pvs_pipelines_create(pvs_context* ctx, char* err, size_t err_size)
 {
+    const VkSpecializationMapEntry entry = {0, 0, sizeof(uint32_t)};
+    const VkSpecializationInfo coop_min = {1, &entry, sizeof(uint32_t), &ctx->coop_sort_min};
+    const VkSpecializationInfo coop_width = {1, &entry, sizeof(uint32_t), &ctx->coop_width};
     return create_layouts(ctx, err, err_size) &&
-           create_compute(ctx, tv_spv_pvs_classify_comp, sizeof tv_spv_pvs_classify_comp,
+           create_compute(ctx, tv_spv_pvs_classify_comp, sizeof tv_spv_pvs_classify_comp, NULL,
                           &ctx->pipelines[PVS_PIPE_CLASSIFY], err, err_size) &&
-           create_compute(ctx, tv_spv_pvs_resolve_comp, sizeof tv_spv_pvs_resolve_comp,
+           create_compute(ctx, tv_spv_pvs_resolve_comp, sizeof tv_spv_pvs_resolve_comp, &coop_min,
                           &ctx->pipelines[PVS_PIPE_RESOLVE], err, err_size) &&
-           create_compute(ctx, tv_spv_pvs_gather_comp, sizeof tv_spv_pvs_gather_comp,
+           create_compute(ctx, tv_spv_pvs_resolve_group_comp, sizeof tv_spv_pvs_resolve_group_comp, &coop_width,
+                          &ctx->pipelines[PVS_PIPE_RESOLVE_GROUP], err, err_size) &&
+           create_compute(ctx, tv_spv_pvs_gather_comp, sizeof tv_spv_pvs_gather_comp, NULL,
                           &ctx->pipelines[PVS_PIPE_GATHER], err, err_size) &&
            create_rasters(ctx, err, err_size);
 }

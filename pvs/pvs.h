@@ -34,6 +34,10 @@ typedef struct pvs_desc {
     uint32_t octree_cap;             /* triangles per octree leaf; 0: PVS_OCTREE_DEFAULT_CAP */
     uint32_t octree_depth;           /* 0: PVS_OCTREE_DEFAULT_DEPTH */
     float near_m;                    /* near plane distance from v*; 0: 0.01 */
+    uint32_t coop_sort_min;          /* P3 sorts trim sequences of at least this many entries with a
+                                        subgroup-wide workgroup per pixel (bitonic), shorter ones per
+                                        thread; 0: 8 (the paper's N) on a GPU, never on a CPU device;
+                                        UINT32_MAX: never */
 } pvs_desc;
 
 /* A double-cone viewcell with its widened field of view. fov_pvs_deg is the
@@ -65,6 +69,7 @@ typedef struct pvs_stats {
     uint64_t kbuffer_bytes_used;  /* most k-buffer bytes filled in one layer */
     uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */
     uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
+    uint64_t coop_pixels;         /* pixel resolves whose sequences a workgroup sorted */
 } pvs_stats;
 
 typedef struct pvs_result {

@@ -16,15 +16,23 @@ typedef struct seq_entry {
     int32_t delta;    /* +1 opens a hidden range, -1 closes it */
 } seq_entry;
 
-/* Total order: depth, then kind rank, then id, so that every sort algorithm
- * (insertion here, bitonic for long GPU lists) yields the same sequence. */
+/* Total order: depth, kind rank, id; then, for a face and its duplicate in
+ * the re-sorted sequence, the interval's opening front (delta +1) first and
+ * a closing back before a lone one (interval -1 last), which is where a
+ * stable sort leaves them. Entries that compare equal are identical, so
+ * every sort algorithm (insertion here and in P3's per-thread pass, bitonic
+ * in its cooperative pass) yields the same sequence. */
 static bool entry_less(const seq_entry* a, const seq_entry* b)
 {
     if (a->depth != b->depth)
         return a->depth < b->depth;
     if (a->kind != b->kind)
         return a->kind < b->kind;
-    return a->id < b->id;
+    if (a->id != b->id)
+        return a->id < b->id;
+    if (a->delta != b->delta)
+        return a->delta > b->delta;
+    return (uint32_t)a->interval < (uint32_t)b->interval;
 }
 
 static void sort_entries(seq_entry* e, uint32_t n)

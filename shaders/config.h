@@ -51,6 +51,9 @@
 #define TV_K_TRIM  32
 #define TV_K_UMBRA 32
 #define TV_K_CARRY 16 /* entries one pixel carries from a layer to the next */
+/* Most workgroups of P3's cooperative pass (Vulkan's minimum of
+ * maxComputeWorkGroupCount[0]); each loops over the deferred pixels. */
+#define TV_PVS_MAX_COOP_GROUPS 65535u
 /* The wide visibility pass dilates triangles by half a pixel, clamped to
  * this many pixels at sharp corners (pvs_face.vert); pvs_face.frag bounds
  * the dilated plane's depth error with it. */

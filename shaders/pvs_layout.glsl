@@ -29,7 +29,8 @@
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
 #define TV_PVS_BIND_CENTRE_DEPTH 20 // 2 uints per pixel: nearest depth bits of the front / back faces covering its centre
 #define TV_PVS_BIND_FRONT_LOST 21 // 2 uints per pixel: nearest depth bits of the fronts / of the candidates the layer's k-buffer had no room for (P2); P3 replaces the second by the candidate spill bound
-#define TV_PVS_BINDINGS        22
+#define TV_PVS_BIND_COOP_LIST  22 // P3: pixels whose sequence the cooperative pass sorts (pvs_resolve_group.comp)
+#define TV_PVS_BINDINGS        23
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
 // behind e1, trim corner behind e0, umbra far corner behind e1, behind e0.
@@ -39,7 +40,9 @@
 // trim, umbra; vertexCount is bumped by P1 per primitive), one
 // VkDispatchIndirectCommand for P3, the active count, the two spill draws
 // (the FF draw again after P3, exact and dilated; P3 copies FF's vertexCount
-// into them when a pixel needs them), then counters that live for a whole
+// into them when a pixel needs them), the VkDispatchIndirectCommand of P3's
+// cooperative pass (groups = min(deferred pixels, TV_PVS_MAX_COOP_GROUPS))
+// and the deferred pixel count, then counters that live for a whole
 // pvs_compute.
 #define TV_PVS_C_DRAW_FF    0
 #define TV_PVS_C_DRAW_BF    4
@@ -49,10 +52,13 @@
 #define TV_PVS_C_ACTIVE     19 // active pixels of the current layer
 #define TV_PVS_C_DRAW_SPILL 20
 #define TV_PVS_C_DRAW_SPILL_WIDE 24
-#define TV_PVS_C_PER_LAYER  28 // slots [0, 28) are reset before every layer
-#define TV_PVS_C_REGIONS    28 // trim regions numbered so far
-#define TV_PVS_C_OVERFLOW_FRONTS 29
-#define TV_PVS_C_COUNT      32
+#define TV_PVS_C_DISPATCH_COOP 28
+#define TV_PVS_C_COOP       31 // pixels deferred to the cooperative pass in this layer
+#define TV_PVS_C_PER_LAYER  32 // slots [0, 32) are reset before every layer
+#define TV_PVS_C_REGIONS    32 // trim regions numbered so far
+#define TV_PVS_C_OVERFLOW_FRONTS 33
+#define TV_PVS_C_COOP_TOTAL 34 // pixel resolves sorted cooperatively
+#define TV_PVS_C_COUNT      36
 
 // Fragment kinds of P2 (push constant `kind`), = TV_ENTRY_* of config.h.
 #define TV_PVS_KIND_FRONT 1u

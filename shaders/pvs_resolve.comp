@@ -1,373 +1,42 @@
 #version 460
-// P3: one invocation per active pixel (the list P2 built). The resolve of
-// paper section 4.3, mirroring pvs_resolve_pixel in pvs/resolve.c function
-// by function (same names, same order, same tie-breaks); the only
-// difference is the runtime capacity view.k in place of the TV_K_* bounds.
-// Output ids set their flag in tri_flags; the pixel's active flag is reset
-// for the next layer (the counters are cleared by a fill before each layer).
+// P3, first pass: one invocation per active pixel (the list P2 built). A
+// trim sequence shorter than COOP_SORT_MIN entries is sorted and resolved
+// here (insertion sort); a longer one is left untouched and its pixel
+// appended to coop_list for pvs_resolve_group.comp, the paper's hybrid sort
+// (section 4.3). The pixel's active flag is reset for the next layer (the
+// counters are cleared by a fill before each layer).
 #extension GL_GOOGLE_include_directive : require
-#include "pvs_common.glsl"
+
+#define TV_RESOLVE_STORAGE
+#define S2 SEQ_MAX
+#define TV_RESOLVE_ENTRIES (SEQ_MAX + SEQ2_MAX)
+#include "pvs_resolve.glsl"
 
 layout(local_size_x = TV_WG_SIZE) in;
 
-#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
-#define IV_MAX (TV_K_BACK + 1 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 1 : TV_K_FRONT + TV_K_CARRY) // + a prior back
-#define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
+// Sequences of at least this many entries go to the cooperative pass
+// (pvs_desc.coop_sort_min; the paper's N = 8).
+layout(constant_id = 0) const uint COOP_SORT_MIN = 8u;
 
-struct seq_entry {
-    float depth;
-    uint kind;
-    uint id;
-    int interval;
-    int delta;
-};
-
-// The pixel: state, counters, k-buffer base.
-uint P, KB;
-uvec4 cnt;
-uint stencil, carry_count;
-float hide_begin, hide_end;
-seq_entry carry[TV_K_CARRY]; // only depth, kind, id used
-
-seq_entry seq[SEQ_MAX];
-seq_entry seq2[SEQ2_MAX];
-uint iv_count;
-uint iv_first[IV_MAX], iv_back[IV_MAX];
-bool iv_valid[IV_MAX];
-bool trims_lost; // the trim list overflowed: see validate()
-bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
-float iv_end[IV_MAX];
-int iv_run;
-uint n_out;
-float term_depth; // depth of the terminator that sealed the pixel
-
-seq_entry make_entry(float depth, uint kind, uint id, int delta) { return seq_entry(depth, kind, id, -1, delta); }
-
-bool entry_less(seq_entry a, seq_entry b)
+void insertion_sort(uint base, uint n)
 {
-    if (a.depth != b.depth)
-        return a.depth < b.depth;
-    if (a.kind != b.kind)
-        return a.kind < b.kind;
-    return a.id < b.id;
-}
-
-void output_id(uint id)
-{
-    if (id == TV_ID_PRIOR)
-        return;
-    tri_flags[id & ~TV_ID_CANDIDATE] = 1u;
-    n_out++;
-}
-
-bool is_candidate(seq_entry e) { return e.kind == TV_ENTRY_FRONT && (e.id & TV_ID_CANDIDATE) != 0u; }
-
-float kdepth(uint bits) { return uintBitsToFloat(bits); }
-
-// The overflow policy: every front this pixel knows of is output and the
-// pixel can no longer be sealed.
-void resolve_overflow()
-{
-    for (uint i = 0u; i < carry_count; i++)
-        if (carry[i].kind == TV_ENTRY_FRONT)
-            output_id(carry[i].id);
-    for (uint i = 0u; i < min(cnt.x, view.k); i++)
-        output_id(kfront[KB + i].y);
-    for (uint i = 0u; i < min(cnt.y, view.k); i++)
-        output_id(kback[KB + i].y);
-    stencil = TV_STENCIL_OVERFLOW;
-    carry_count = 0u;
-    hide_begin = hide_end = 0.0;
-}
-
-bool umbra_depth(uint region, inout float depth)
-{
-    const float inf = uintBitsToFloat(0x7F800000u);
-    float nearest = inf;
-    for (uint i = 0u; i < min(cnt.w, view.k); i++) {
-        uvec2 u = kumbra[KB + i];
-        if (u.y == region)
-            nearest = min(nearest, kdepth(u.x));
-    }
-    for (uint i = 0u; i < carry_count; i++) {
-        if (carry[i].kind == TV_ENTRY_UMBRA && carry[i].id == region)
-            nearest = min(nearest, carry[i].depth);
-    }
-    if (nearest == inf)
-        return false;
-    depth = nearest;
-    return true;
-}
-
-bool stored_face(uint kind, uint depth_bits)
-{
-    uint n = min(kind == TV_ENTRY_FRONT ? cnt.x : cnt.y, view.k);
-    for (uint i = 0u; i < n; i++)
-        if ((kind == TV_ENTRY_FRONT ? kfront[KB + i].x : kback[KB + i].x) == depth_bits)
-            return true;
-    return false;
-}
-
-uint gather(bool first)
-{
-    uint n = 0u;
-    if (first) {
-        const uint inf = 0x7F800000u;
-        uint f = centre_depth[2u * P], b = centre_depth[2u * P + 1u];
-        if (f < inf && !stored_face(TV_ENTRY_FRONT, f))
-            seq[n++] = make_entry(kdepth(f), TV_ENTRY_FRONT, TV_ID_PRIOR, 0);
-        if (b < inf && !stored_face(TV_ENTRY_BACK, b))
-            seq[n++] = make_entry(kdepth(b), TV_ENTRY_BACK, TV_ID_PRIOR, 0);
-    }
-    for (uint i = 0u; i < carry_count; i++)
-        if (carry[i].kind != TV_ENTRY_UMBRA)
-            seq[n++] = make_entry(carry[i].depth, carry[i].kind, carry[i].id, 0);
-    for (uint i = 0u; i < min(cnt.x, view.k); i++)
-        seq[n++] = make_entry(kdepth(kfront[KB + i].x), TV_ENTRY_FRONT, kfront[KB + i].y, 0);
-    for (uint i = 0u; i < min(cnt.y, view.k); i++)
-        seq[n++] = make_entry(kdepth(kback[KB + i].x), TV_ENTRY_BACK, kback[KB + i].y, 0);
-    for (uint i = 0u; i < min(cnt.z, view.k); i++)
-        seq[n++] = make_entry(kdepth(ktrim[KB + i].x), TV_ENTRY_TRIM, ktrim[KB + i].y, 0);
-    for (uint i = 1u; i < n; i++) { // insertion sort
-        seq_entry x = seq[i];
+    for (uint i = 1u; i < n; i++) {
+        seq_entry x = ent[base + i];
         uint j = i;
-        while (j > 0u && entry_less(x, seq[j - 1u])) {
-            seq[j] = seq[j - 1u];
+        while (j > 0u && entry_less(x, ent[base + j - 1u])) {
+            ent[base + j] = ent[base + j - 1u];
             j--;
         }
-        seq[j] = x;
-    }
-    return n;
-}
-
-void form_intervals(uint n)
-{
-    iv_count = 0u;
-    iv_run = -1;
-    for (uint i = 0u; i < n; i++) {
-        if (seq[i].kind == TV_ENTRY_FRONT && !is_candidate(seq[i]) && iv_run < 0) {
-            iv_run = int(i);
-        } else if (seq[i].kind == TV_ENTRY_BACK && iv_run >= 0) {
-            uint k = iv_count++;
-            iv_first[k] = uint(iv_run);
-            iv_back[k] = i;
-            for (uint j = uint(iv_run); j <= i; j++)
-                if (seq[j].kind != TV_ENTRY_TRIM)
-                    seq[j].interval = int(k);
-            iv_run = -1;
-        }
+        ent[base + j] = x;
     }
 }
 
-void validate(uint n)
+void defer_pixel()
 {
-    for (uint v = 0u; v < iv_count; v++) {
-        float lo = seq[iv_first[v]].depth, hi = seq[iv_back[v]].depth;
-        iv_valid[v] = trims_lost;
-        iv_end[v] = hi;
-        if (trims_lost)
-            continue;
-        for (uint i = 0u; i < n; i++) {
-            if (seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
-                continue;
-            float u = hi;
-            if (!umbra_depth(seq[i].id, u) || u < hi)
-                u = hi;
-            iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
-            iv_valid[v] = true;
-        }
-    }
-}
-
-uint replace_backs(uint n)
-{
-    uint m = 0u;
-    for (uint i = 0u; i < n; i++) {
-        int v = seq[i].interval;
-        bool valid = v >= 0 && iv_valid[v];
-        if (valid && seq[i].kind == TV_ENTRY_BACK)
-            continue;
-        seq2[m] = seq[i];
-        seq2[m++].delta = valid && iv_first[v] == i ? 1 : 0;
-    }
-    for (uint v = 0u; v < iv_count; v++) {
-        if (iv_valid[v]) {
-            seq2[m] = make_entry(iv_end[v], TV_ENTRY_END, v, -1);
-            seq2[m++].interval = int(v);
-        }
-    }
-    if (hide_begin < hide_end) {
-        seq2[m++] = make_entry(hide_begin, TV_ENTRY_BEGIN, 0u, 1);
-        seq2[m++] = make_entry(hide_end, TV_ENTRY_END, 0xFFFFFFFFu, -1);
-    }
-    for (uint i = 1u; i < m; i++) {
-        seq_entry x = seq2[i];
-        uint j = i;
-        while (j > 0u && entry_less(x, seq2[j - 1u])) {
-            seq2[j] = seq2[j - 1u];
-            j--;
-        }
-        seq2[j] = x;
-    }
-    return m;
-}
-
-bool walk(uint m)
-{
-    int prefix = 0;
-    for (uint i = 0u; i < m; i++) {
-        seq_entry e = seq2[i];
-        bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
-        if (e.delta > 0 && e.kind == TV_ENTRY_FRONT)
-            iv_hidden[e.interval] = prefix > 0;
-        prefix += e.delta;
-        bool in_valid = e.interval >= 0 && iv_valid[e.interval];
-        if (is_candidate(e)) { // touches the pixel only: output unless hidden, never an occluder
-            if (prefix == 0 || (in_valid && !iv_hidden[e.interval]))
-                output_id(e.id);
-            continue;
-        }
-        if (e.kind == TV_ENTRY_FRONT && in_valid) {
-            if (!iv_hidden[e.interval])
-                output_id(e.id);
-            continue;
-        }
-        if (!is_face || prefix > 0)
-            continue;
-        if (e.kind == TV_ENTRY_FRONT && e.interval < 0)
-            return false;
-        // A lone back (no front before it: a single-sided surface seen from
-        // behind) is visible, as the renderer culls no faces; the back of a
-        // run whose front lies in an umbra is hidden by that front.
-        if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
-            output_id(e.id);
-        term_depth = e.depth;
-        return true;
-    }
-    return false;
-}
-
-void carry_range(uint n)
-{
-    float tail = uintBitsToFloat(0xFF800000u); // -inf
-    if (iv_run >= 0) {
-        tail = seq[iv_run].depth;
-    } else {
-        bool any = false;
-        for (uint i = 0u; i < n; i++) {
-            if (seq[i].kind == TV_ENTRY_FRONT || seq[i].kind == TV_ENTRY_BACK) {
-                tail = seq[i].depth;
-                any = true;
-            }
-        }
-        if (!any)
-            return;
-    }
-    float lo = uintBitsToFloat(0x7F800000u), hi = uintBitsToFloat(0xFF800000u);
-    if (hide_begin < hide_end && hide_begin <= tail && tail < hide_end) {
-        lo = hide_begin;
-        hi = hide_end;
-    }
-    for (uint v = 0u; v < iv_count; v++) {
-        float b = seq[iv_first[v]].depth;
-        if (iv_valid[v] && b <= tail && tail < iv_end[v]) {
-            lo = min(b, lo);
-            hi = max(iv_end[v], hi);
-        }
-    }
-    hide_begin = lo < hi ? lo : 0.0;
-    hide_end = lo < hi ? hi : 0.0;
-}
-
-bool carry_run(uint n)
-{
-    seq_entry next[TV_K_CARRY];
-    uint c = 0u;
-    for (uint i = iv_run < 0 ? n : uint(iv_run); i < n; i++) {
-        if (c == TV_K_CARRY)
-            return false;
-        next[c++] = seq[i];
-        if (trims_lost && i == uint(iv_run)) {
-            if (c == TV_K_CARRY)
-                return false;
-            next[c++] = make_entry(seq[i].depth, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
-        }
-    }
-    uint run_entries = c;
-    for (uint i = 0u; i < run_entries; i++) {
-        float u = 0.0;
-        if (next[i].kind != TV_ENTRY_TRIM || !umbra_depth(next[i].id, u))
-            continue;
-        if (c == TV_K_CARRY)
-            return false;
-        next[c++] = make_entry(u, TV_ENTRY_UMBRA, next[i].id, 0);
-    }
-    for (uint i = 0u; i < c; i++)
-        carry[i] = next[i];
-    carry_count = c;
-    return true;
-}
-
-// pvs_resolve_pixel; returns true when the overflow policy handled it.
-bool resolve_pixel(out uint seq_len)
-{
-    seq_len = 0u;
-    if (stencil == TV_STENCIL_SEALED)
-        return false;
-    if (stencil == TV_STENCIL_UNTRIMMED && cnt.z == 0u)
-        return false;
-    if (stencil == TV_STENCIL_OVERFLOW) {
-        resolve_overflow();
-        return true;
-    }
-    bool first = stencil == TV_STENCIL_UNTRIMMED;
-    stencil = TV_STENCIL_TRIMMED;
-    uint n = gather(first);
-    seq_len = n;
-    form_intervals(n);
-    trims_lost = cnt.z > view.k;
-    validate(n);
-    uint m = replace_backs(n);
-    float lost = kdepth(front_lost[2u * P]);
-    bool sealed = walk(m);
-    if (lost < kdepth(0x7F800000u) && !(sealed && term_depth < lost)) {
-        resolve_overflow(); // outputs what the walk did, and more
-        return true;
-    }
-    if (sealed) {
-        stencil = TV_STENCIL_SEALED;
-        carry_count = 0u;
-        hide_begin = hide_end = 0.0;
-        return false;
-    }
-    carry_range(n);
-    if (!carry_run(n)) {
-        for (uint i = uint(iv_run); i < n; i++)
-            if (seq[i].kind == TV_ENTRY_FRONT)
-                output_id(seq[i].id);
-        stencil = TV_STENCIL_OVERFLOW;
-        carry_count = 0u;
-        hide_begin = hide_end = 0.0;
-        return true;
-    }
-    return false;
-}
-
-// Fragments P2 had no room for (pvs_spill_output of resolve.h): the exact
-// spill draw outputs every front of an overflowed pixel that lost a front;
-// the dilated one the candidates nearer than the bound left in
-// front_lost[2P + 1]: all of them at an overflowed or open pixel, those in
-// front of the terminator at a pixel sealed now, none otherwise.
-void request_spill()
-{
-    const float inf = uintBitsToFloat(0x7F800000u);
-    if (stencil == TV_STENCIL_OVERFLOW && front_lost[2u * P] != 0x7F800000u)
-        counters[TV_PVS_C_DRAW_SPILL] = counters[TV_PVS_C_DRAW_FF];
-    float bound = stencil == TV_STENCIL_SEALED ? term_depth : inf;
-    bool candidates = kdepth(front_lost[2u * P + 1u]) < bound;
-    front_lost[2u * P + 1u] = candidates ? floatBitsToUint(bound) : 0u;
-    if (candidates)
-        counters[TV_PVS_C_DRAW_SPILL_WIDE] = counters[TV_PVS_C_DRAW_FF];
+    uint slot = atomicAdd(counters[TV_PVS_C_COOP], 1u);
+    coop_list[slot] = P;
+    atomicMax(counters[TV_PVS_C_DISPATCH_COOP], min(slot + 1u, TV_PVS_MAX_COOP_GROUPS));
+    atomicAdd(counters[TV_PVS_C_COOP_TOTAL], 1u);
 }
 
 void main()
@@ -375,33 +44,20 @@ void main()
     uint i = gl_GlobalInvocationID.x;
     if (i >= counters[TV_PVS_C_ACTIVE])
         return;
-    P = active_list[i];
-    KB = P * view.k;
-    cnt = pixcount[P];
-    uvec4 st = pixstate[P];
-    stencil = st.x;
-    carry_count = st.y;
-    hide_begin = uintBitsToFloat(st.z);
-    hide_end = uintBitsToFloat(st.w);
-    for (uint c = 0u; c < carry_count; c++) {
-        uvec4 e = carry_buf[P * TV_K_CARRY + c];
-        carry[c] = make_entry(uintBitsToFloat(e.x), e.y, e.z, 0);
+    load_pixel(active_list[i]);
+    bool first;
+    uint step = resolve_begin(first), n = 0u;
+    bool handled = step == RESOLVE_OVERFLOW;
+    if (step == RESOLVE_SEQUENCE) {
+        n = gather(first);
+        if (n >= COOP_SORT_MIN) {
+            defer_pixel(); // nothing of the pixel was written yet
+            return;
+        }
+        insertion_sort(0u, n);
+        uint m = resolve_intervals(n);
+        insertion_sort(S2, m);
+        handled = resolve_end(n, m);
     }
-    n_out = 0u;
-    term_depth = 0.0;
-    uint seq_len;
-    bool overflowed = resolve_pixel(seq_len) || any(greaterThan(cnt, uvec4(view.k)));
-    if (cnt.x > view.k)
-        request_spill();
-
-    pixstate[P] = uvec4(stencil, carry_count, floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
-    for (uint c = 0u; c < carry_count; c++)
-        carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
-    uvec4 stored = min(cnt, uvec4(view.k));
-    atomicAdd(layer_stats[pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w)); // bytes
-    atomicAdd(layer_stats[pc.layer].y, 1u);
-    atomicAdd(layer_stats[pc.layer].z, seq_len);
-    if (overflowed)
-        atomicAdd(layer_stats[pc.layer].w, 1u);
-    active_flag[P] = 0u;
+    finish_pixel(n, handled);
 }

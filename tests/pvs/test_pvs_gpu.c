@@ -35,7 +35,8 @@ typedef struct fixture {
     rnd_target* apex_target;
     pvs_context* pvs;
     float *depth, *pvs_depth;
-    uint32_t octree_cap; /* 0: the default */
+    uint32_t octree_cap;    /* 0: the default */
+    uint32_t coop_sort_min; /* 0: the default */
 } fixture;
 
 static void fixture_open(fixture* f, uint32_t k)
@@ -44,7 +45,8 @@ static void fixture_open(fixture* f, uint32_t k)
     f->gpu = rnd_scene_create(g_rnd, &f->scene, err, sizeof err);
     f->target = f->gpu ? rnd_target_create(g_rnd, W, H, err, sizeof err) : NULL;
     f->apex_target = f->target ? rnd_target_create(g_rnd, PW, PH, err, sizeof err) : NULL;
-    f->pvs = f->apex_target ? pvs_create(g_rnd, &f->scene, f->gpu, &(pvs_desc){.width = PW, .height = PH, .k = k, .octree_cap = f->octree_cap},
+    f->pvs = f->apex_target ? pvs_create(g_rnd, &f->scene, f->gpu, &(pvs_desc){.width = PW, .height = PH, .k = k, .octree_cap = f->octree_cap,
+                                                              .coop_sort_min = f->coop_sort_min},
                                          err, sizeof err)
                             : NULL;
     if (!f->pvs) {
@@ -594,6 +596,43 @@ static void test_tiny_k_overflow(void)
     fixture_close(&f);
 }
 
+/* ---- hybrid sort: per thread or per workgroup, the same PVS ---- */
+
+/* The PVS of the interior's room with every sequence sorted per thread, those
+ * of >= 8 entries (the paper's split) and of >= 2 entries by a workgroup.
+ * Bitonic sort is not stable, so this fails if two entries that compare
+ * equal could differ. k = 32 avoids overflow, whose outcome depends on
+ * fragment arrival order. */
+static void test_hybrid_sort(void)
+{
+    const uint32_t mins[3] = {UINT32_MAX, 8, 2};
+    uint32_t *ids[3] = {NULL}, counts[3] = {0};
+    uint64_t coop[3] = {0}, resolves = 0;
+    pvs_viewcell vc = viewcell(-6.0f, 1.7f, 6.5f, 0.1f);
+    vc.forward[0] = 1.0f;
+    vc.forward[2] = 0.0f;
+    for (int i = 0; i < 3; i++) {
+        fixture f = {.coop_sort_min = mins[i]};
+        load(&f, "builtin:interior", 32);
+        pvs_result r;
+        TV_CHECK(compute(&f, &vc, &r));
+        TV_CHECK(r.stats.overflow_pixels == 0);
+        coop[i] = r.stats.coop_pixels;
+        resolves = r.stats.active_pixels;
+        printf("  coop_sort_min %u: %llu of %llu resolves sorted by a workgroup, mean sequence %.2f\n", mins[i],
+               (unsigned long long)coop[i], (unsigned long long)resolves, r.stats.mean_sequence);
+        counts[i] = r.count;
+        ids[i] = malloc(sizeof(uint32_t) * (r.count ? r.count : 1));
+        memcpy(ids[i], r.ids, sizeof(uint32_t) * r.count);
+        fixture_close(&f);
+    }
+    TV_CHECK(coop[0] == 0 && coop[1] > 0 && coop[2] > coop[1] && coop[2] < resolves);
+    for (int i = 1; i < 3; i++)
+        TV_CHECK(counts[i] == counts[0] && memcmp(ids[i], ids[0], sizeof(uint32_t) * counts[0]) == 0);
+    for (int i = 0; i < 3; i++)
+        free(ids[i]);
+}
+
 /* ---- a worker thread computes while the main thread renders ---- */
 
 typedef struct worker {
@@ -668,6 +707,7 @@ int main(void)
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_tiny_k_overflow);
+    TV_TEST_RUN(test_hybrid_sort);
     TV_TEST_RUN(test_city_no_false_negatives);
     TV_TEST_RUN(test_worker_thread);
     TV_TEST_RUN(test_invalid_input);

@@ -1,0 +1,420 @@
+// pvs_resolve.glsl - P3, the resolve of paper section 4.3, shared by its
+// two variants: pvs_resolve.comp (one invocation per active pixel, insertion
+// sort) and pvs_resolve_group.comp (one workgroup per pixel whose sequence
+// is long, bitonic sort). It mirrors pvs_resolve_pixel in pvs/resolve.c
+// function by function (same names, same order, same tie-breaks); the only
+// difference is the runtime capacity view.k in place of the TV_K_* bounds.
+// Output ids set their flag in tri_flags.
+//
+// The includer defines TV_RESOLVE_STORAGE (empty or `shared`), S2 and
+// TV_RESOLVE_ENTRIES (the layout of ent[] below).
+#ifndef TV_PVS_RESOLVE_GLSL
+#define TV_PVS_RESOLVE_GLSL
+
+#include "pvs_common.glsl"
+
+#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
+#define IV_MAX (TV_K_BACK + 1 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 1 : TV_K_FRONT + TV_K_CARRY) // + a prior back
+#define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
+
+struct seq_entry {
+    float depth;
+    uint kind;
+    uint id;
+    int interval;
+    int delta;
+};
+
+// The pixel: state, counters, k-buffer base.
+uint P, KB;
+uvec4 cnt;
+uint stencil, carry_count;
+float hide_begin, hide_end;
+seq_entry carry[TV_K_CARRY]; // only depth, kind, id used
+
+// The trim sequence at ent[0, n), the re-sorted one at ent[S2, S2 + m):
+// private to the invocation in pvs_resolve.comp, shared by the workgroup in
+// pvs_resolve_group.comp (which pads both to powers of two for bitonic sort).
+TV_RESOLVE_STORAGE seq_entry ent[TV_RESOLVE_ENTRIES];
+uint iv_count;
+uint iv_first[IV_MAX], iv_back[IV_MAX];
+bool iv_valid[IV_MAX];
+bool trims_lost; // the trim list overflowed: see validate()
+bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
+float iv_end[IV_MAX];
+int iv_run;
+uint n_out;
+float term_depth; // depth of the terminator that sealed the pixel
+
+seq_entry make_entry(float depth, uint kind, uint id, int delta) { return seq_entry(depth, kind, id, -1, delta); }
+
+// resolve.c's total order: entries that compare equal are identical in
+// every field, so the per-thread (stable) and cooperative (unstable) sorts
+// yield the same sequence.
+bool entry_less(seq_entry a, seq_entry b)
+{
+    if (a.depth != b.depth)
+        return a.depth < b.depth;
+    if (a.kind != b.kind)
+        return a.kind < b.kind;
+    if (a.id != b.id)
+        return a.id < b.id;
+    if (a.delta != b.delta)
+        return a.delta > b.delta;
+    return uint(a.interval) < uint(b.interval);
+}
+
+void output_id(uint id)
+{
+    if (id == TV_ID_PRIOR)
+        return;
+    tri_flags[id & ~TV_ID_CANDIDATE] = 1u;
+    n_out++;
+}
+
+bool is_candidate(seq_entry e) { return e.kind == TV_ENTRY_FRONT && (e.id & TV_ID_CANDIDATE) != 0u; }
+
+float kdepth(uint bits) { return uintBitsToFloat(bits); }
+
+// The overflow policy: every front this pixel knows of is output and the
+// pixel can no longer be sealed.
+void resolve_overflow()
+{
+    for (uint i = 0u; i < carry_count; i++)
+        if (carry[i].kind == TV_ENTRY_FRONT)
+            output_id(carry[i].id);
+    for (uint i = 0u; i < min(cnt.x, view.k); i++)
+        output_id(kfront[KB + i].y);
+    for (uint i = 0u; i < min(cnt.y, view.k); i++)
+        output_id(kback[KB + i].y);
+    stencil = TV_STENCIL_OVERFLOW;
+    carry_count = 0u;
+    hide_begin = hide_end = 0.0;
+}
+
+bool umbra_depth(uint region, inout float depth)
+{
+    const float inf = uintBitsToFloat(0x7F800000u);
+    float nearest = inf;
+    for (uint i = 0u; i < min(cnt.w, view.k); i++) {
+        uvec2 u = kumbra[KB + i];
+        if (u.y == region)
+            nearest = min(nearest, kdepth(u.x));
+    }
+    for (uint i = 0u; i < carry_count; i++) {
+        if (carry[i].kind == TV_ENTRY_UMBRA && carry[i].id == region)
+            nearest = min(nearest, carry[i].depth);
+    }
+    if (nearest == inf)
+        return false;
+    depth = nearest;
+    return true;
+}
+
+bool stored_face(uint kind, uint depth_bits)
+{
+    uint n = min(kind == TV_ENTRY_FRONT ? cnt.x : cnt.y, view.k);
+    for (uint i = 0u; i < n; i++)
+        if ((kind == TV_ENTRY_FRONT ? kfront[KB + i].x : kback[KB + i].x) == depth_bits)
+            return true;
+    return false;
+}
+
+uint gather(bool first)
+{
+    uint n = 0u;
+    if (first) {
+        const uint inf = 0x7F800000u;
+        uint f = centre_depth[2u * P], b = centre_depth[2u * P + 1u];
+        if (f < inf && !stored_face(TV_ENTRY_FRONT, f))
+            ent[n++] = make_entry(kdepth(f), TV_ENTRY_FRONT, TV_ID_PRIOR, 0);
+        if (b < inf && !stored_face(TV_ENTRY_BACK, b))
+            ent[n++] = make_entry(kdepth(b), TV_ENTRY_BACK, TV_ID_PRIOR, 0);
+    }
+    for (uint i = 0u; i < carry_count; i++)
+        if (carry[i].kind != TV_ENTRY_UMBRA)
+            ent[n++] = make_entry(carry[i].depth, carry[i].kind, carry[i].id, 0);
+    for (uint i = 0u; i < min(cnt.x, view.k); i++)
+        ent[n++] = make_entry(kdepth(kfront[KB + i].x), TV_ENTRY_FRONT, kfront[KB + i].y, 0);
+    for (uint i = 0u; i < min(cnt.y, view.k); i++)
+        ent[n++] = make_entry(kdepth(kback[KB + i].x), TV_ENTRY_BACK, kback[KB + i].y, 0);
+    for (uint i = 0u; i < min(cnt.z, view.k); i++)
+        ent[n++] = make_entry(kdepth(ktrim[KB + i].x), TV_ENTRY_TRIM, ktrim[KB + i].y, 0);
+    return n;
+}
+
+void form_intervals(uint n)
+{
+    iv_count = 0u;
+    iv_run = -1;
+    for (uint i = 0u; i < n; i++) {
+        if (ent[i].kind == TV_ENTRY_FRONT && !is_candidate(ent[i]) && iv_run < 0) {
+            iv_run = int(i);
+        } else if (ent[i].kind == TV_ENTRY_BACK && iv_run >= 0) {
+            uint k = iv_count++;
+            iv_first[k] = uint(iv_run);
+            iv_back[k] = i;
+            for (uint j = uint(iv_run); j <= i; j++)
+                if (ent[j].kind != TV_ENTRY_TRIM)
+                    ent[j].interval = int(k);
+            iv_run = -1;
+        }
+    }
+}
+
+void validate(uint n)
+{
+    for (uint v = 0u; v < iv_count; v++) {
+        float lo = ent[iv_first[v]].depth, hi = ent[iv_back[v]].depth;
+        iv_valid[v] = trims_lost;
+        iv_end[v] = hi;
+        if (trims_lost)
+            continue;
+        for (uint i = 0u; i < n; i++) {
+            if (ent[i].kind != TV_ENTRY_TRIM || ent[i].depth < lo || ent[i].depth > hi)
+                continue;
+            float u = hi;
+            if (!umbra_depth(ent[i].id, u) || u < hi)
+                u = hi;
+            iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
+            iv_valid[v] = true;
+        }
+    }
+}
+
+uint replace_backs(uint n)
+{
+    uint m = 0u;
+    for (uint i = 0u; i < n; i++) {
+        int v = ent[i].interval;
+        bool valid = v >= 0 && iv_valid[v];
+        if (valid && ent[i].kind == TV_ENTRY_BACK)
+            continue;
+        ent[S2 + m] = ent[i];
+        ent[S2 + m++].delta = valid && iv_first[v] == i ? 1 : 0;
+    }
+    for (uint v = 0u; v < iv_count; v++) {
+        if (iv_valid[v]) {
+            ent[S2 + m] = make_entry(iv_end[v], TV_ENTRY_END, v, -1);
+            ent[S2 + m++].interval = int(v);
+        }
+    }
+    if (hide_begin < hide_end) {
+        ent[S2 + m++] = make_entry(hide_begin, TV_ENTRY_BEGIN, 0u, 1);
+        ent[S2 + m++] = make_entry(hide_end, TV_ENTRY_END, 0xFFFFFFFFu, -1);
+    }
+    return m;
+}
+
+bool walk(uint m)
+{
+    int prefix = 0;
+    for (uint i = 0u; i < m; i++) {
+        seq_entry e = ent[S2 + i];
+        bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
+        if (e.delta > 0 && e.kind == TV_ENTRY_FRONT)
+            iv_hidden[e.interval] = prefix > 0;
+        prefix += e.delta;
+        bool in_valid = e.interval >= 0 && iv_valid[e.interval];
+        if (is_candidate(e)) { // touches the pixel only: output unless hidden, never an occluder
+            if (prefix == 0 || (in_valid && !iv_hidden[e.interval]))
+                output_id(e.id);
+            continue;
+        }
+        if (e.kind == TV_ENTRY_FRONT && in_valid) {
+            if (!iv_hidden[e.interval])
+                output_id(e.id);
+            continue;
+        }
+        if (!is_face || prefix > 0)
+            continue;
+        if (e.kind == TV_ENTRY_FRONT && e.interval < 0)
+            return false;
+        // A lone back (no front before it: a single-sided surface seen from
+        // behind) is visible, as the renderer culls no faces; the back of a
+        // run whose front lies in an umbra is hidden by that front.
+        if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
+            output_id(e.id);
+        term_depth = e.depth;
+        return true;
+    }
+    return false;
+}
+
+void carry_range(uint n)
+{
+    float tail = uintBitsToFloat(0xFF800000u); // -inf
+    if (iv_run >= 0) {
+        tail = ent[iv_run].depth;
+    } else {
+        bool any = false;
+        for (uint i = 0u; i < n; i++) {
+            if (ent[i].kind == TV_ENTRY_FRONT || ent[i].kind == TV_ENTRY_BACK) {
+                tail = ent[i].depth;
+                any = true;
+            }
+        }
+        if (!any)
+            return;
+    }
+    float lo = uintBitsToFloat(0x7F800000u), hi = uintBitsToFloat(0xFF800000u);
+    if (hide_begin < hide_end && hide_begin <= tail && tail < hide_end) {
+        lo = hide_begin;
+        hi = hide_end;
+    }
+    for (uint v = 0u; v < iv_count; v++) {
+        float b = ent[iv_first[v]].depth;
+        if (iv_valid[v] && b <= tail && tail < iv_end[v]) {
+            lo = min(b, lo);
+            hi = max(iv_end[v], hi);
+        }
+    }
+    hide_begin = lo < hi ? lo : 0.0;
+    hide_end = lo < hi ? hi : 0.0;
+}
+
+bool carry_run(uint n)
+{
+    seq_entry next[TV_K_CARRY];
+    uint c = 0u;
+    for (uint i = iv_run < 0 ? n : uint(iv_run); i < n; i++) {
+        if (c == TV_K_CARRY)
+            return false;
+        next[c++] = ent[i];
+        if (trims_lost && i == uint(iv_run)) {
+            if (c == TV_K_CARRY)
+                return false;
+            next[c++] = make_entry(ent[i].depth, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
+        }
+    }
+    uint run_entries = c;
+    for (uint i = 0u; i < run_entries; i++) {
+        float u = 0.0;
+        if (next[i].kind != TV_ENTRY_TRIM || !umbra_depth(next[i].id, u))
+            continue;
+        if (c == TV_K_CARRY)
+            return false;
+        next[c++] = make_entry(u, TV_ENTRY_UMBRA, next[i].id, 0);
+    }
+    for (uint i = 0u; i < c; i++)
+        carry[i] = next[i];
+    carry_count = c;
+    return true;
+}
+
+// pvs_resolve_pixel in stages, so that the cooperative variant can sort
+// between them. resolve_begin: RESOLVE_NONE (nothing to resolve),
+// RESOLVE_OVERFLOW (the overflow policy handled it) or RESOLVE_SEQUENCE
+// (gather, sort ent[0, n), resolve_intervals, sort ent[S2, S2 + m),
+// resolve_end).
+#define RESOLVE_NONE 0u
+#define RESOLVE_OVERFLOW 1u
+#define RESOLVE_SEQUENCE 2u
+
+uint resolve_begin(out bool first)
+{
+    first = stencil == TV_STENCIL_UNTRIMMED;
+    if (stencil == TV_STENCIL_SEALED)
+        return RESOLVE_NONE;
+    if (stencil == TV_STENCIL_UNTRIMMED && cnt.z == 0u)
+        return RESOLVE_NONE;
+    if (stencil == TV_STENCIL_OVERFLOW) {
+        resolve_overflow();
+        return RESOLVE_OVERFLOW;
+    }
+    stencil = TV_STENCIL_TRIMMED;
+    return RESOLVE_SEQUENCE;
+}
+
+uint resolve_intervals(uint n)
+{
+    form_intervals(n);
+    trims_lost = cnt.z > view.k;
+    validate(n);
+    return replace_backs(n);
+}
+
+// Returns true when the overflow policy handled the pixel.
+bool resolve_end(uint n, uint m)
+{
+    float lost = kdepth(front_lost[2u * P]);
+    bool sealed = walk(m);
+    if (lost < kdepth(0x7F800000u) && !(sealed && term_depth < lost)) {
+        resolve_overflow(); // outputs what the walk did, and more
+        return true;
+    }
+    if (sealed) {
+        stencil = TV_STENCIL_SEALED;
+        carry_count = 0u;
+        hide_begin = hide_end = 0.0;
+        return false;
+    }
+    carry_range(n);
+    if (!carry_run(n)) {
+        for (uint i = uint(iv_run); i < n; i++)
+            if (ent[i].kind == TV_ENTRY_FRONT)
+                output_id(ent[i].id);
+        stencil = TV_STENCIL_OVERFLOW;
+        carry_count = 0u;
+        hide_begin = hide_end = 0.0;
+        return true;
+    }
+    return false;
+}
+
+// Fragments P2 had no room for (pvs_spill_output of resolve.h): the exact
+// spill draw outputs every front of an overflowed pixel that lost a front;
+// the dilated one the candidates nearer than the bound left in
+// front_lost[2P + 1]: all of them at an overflowed or open pixel, those in
+// front of the terminator at a pixel sealed now, none otherwise.
+void request_spill()
+{
+    const float inf = uintBitsToFloat(0x7F800000u);
+    if (stencil == TV_STENCIL_OVERFLOW && front_lost[2u * P] != 0x7F800000u)
+        counters[TV_PVS_C_DRAW_SPILL] = counters[TV_PVS_C_DRAW_FF];
+    float bound = stencil == TV_STENCIL_SEALED ? term_depth : inf;
+    bool candidates = kdepth(front_lost[2u * P + 1u]) < bound;
+    front_lost[2u * P + 1u] = candidates ? floatBitsToUint(bound) : 0u;
+    if (candidates)
+        counters[TV_PVS_C_DRAW_SPILL_WIDE] = counters[TV_PVS_C_DRAW_FF];
+}
+
+
+void load_pixel(uint pixel)
+{
+    P = pixel;
+    KB = P * view.k;
+    cnt = pixcount[P];
+    uvec4 st = pixstate[P];
+    stencil = st.x;
+    carry_count = st.y;
+    hide_begin = uintBitsToFloat(st.z);
+    hide_end = uintBitsToFloat(st.w);
+    for (uint c = 0u; c < carry_count; c++) {
+        uvec4 e = carry_buf[P * TV_K_CARRY + c];
+        carry[c] = make_entry(uintBitsToFloat(e.x), e.y, e.z, 0);
+    }
+    n_out = 0u;
+    term_depth = 0.0;
+}
+
+// Writes the pixel's state back, requests spill draws, adds the layer's
+// statistics and clears the pixel's active flag.
+void finish_pixel(uint seq_len, bool handled)
+{
+    bool overflowed = handled || any(greaterThan(cnt, uvec4(view.k)));
+    if (cnt.x > view.k)
+        request_spill();
+    pixstate[P] = uvec4(stencil, carry_count, floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
+    for (uint c = 0u; c < carry_count; c++)
+        carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
+    uvec4 stored = min(cnt, uvec4(view.k));
+    atomicAdd(layer_stats[pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w)); // bytes
+    atomicAdd(layer_stats[pc.layer].y, 1u);
+    atomicAdd(layer_stats[pc.layer].z, seq_len);
+    if (overflowed)
+        atomicAdd(layer_stats[pc.layer].w, 1u);
+    active_flag[P] = 0u;
+}
+
+#endif
