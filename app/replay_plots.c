@@ -130,7 +130,8 @@ void tv_replay_plots(const char* dir)
             "set key top right\nset grid\nset xlabel 'time (s)'\n"
             "csv = 'frames.csv'\n"
             "set output 'plot_psnr.png'\nset ylabel 'PSNR (dB)'\n"
-            "plot csv using %d:(column(%d) > 200 ? 1/0 : column(%d)) skip 1 with points pt 7 ps 0.3 title 'PSNR PVS vs full (identical frames omitted)'\n"
+            "plot csv using %d:(column(%d) > 200 ? 1/0 : column(%d)) skip 1 with points pt 7 ps 0.3 title 'PSNR PVS vs full', "
+            "csv using %d:(column(%d) > 200 ? 100 : 1/0) skip 1 with points pt 1 ps 0.5 lc rgb 'grey' title 'identical (drawn at 100 dB)'\n"
             "set output 'plot_fn_pixels.png'\nset ylabel 'pixels'\n"
             "plot csv using %d:%d skip 1 with impulses title 'false-negative pixels', "
             "csv using %d:(column(%d) == 0 ? column(%d) : 1/0) skip 1 with points pt 6 ps 0.8 lc rgb 'red' title 'viewcell miss'\n"
@@ -144,7 +145,7 @@ void tv_replay_plots(const char* dir)
             "set output 'plot_timings.png'\nset ylabel 'ms'\n"
             "plot csv using %d:%d skip 1 with steps title 'PVS compute (wall)', csv using %d:%d skip 1 with lines title 'render full', "
             "csv using %d:%d skip 1 with lines title 'render PVS', csv using %d:%d skip 1 with lines title 'pose age'\n",
-            COL_T, COL_PSNR, COL_PSNR, COL_T, COL_FN, COL_T, COL_INSIDE, COL_FN, COL_T, COL_PVS_FRACTION, COL_T, COL_DELTA,
+            COL_T, COL_PSNR, COL_PSNR, COL_T, COL_PSNR, COL_T, COL_FN, COL_T, COL_INSIDE, COL_FN, COL_T, COL_PVS_FRACTION, COL_T, COL_DELTA,
             COL_T, COL_FOV, COL_T, COL_PRED_POS, COL_T, COL_PRED_ROT, COL_T, COL_PVS_MS, COL_T, COL_RENDER_FULL,
             COL_T, COL_RENDER_PVS, COL_T, COL_POSE_AGE);
     tv_gnuplot_finish(f, dir, "plots.gp", "frames.csv and summary.json");
