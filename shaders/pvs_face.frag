@@ -8,9 +8,10 @@
 // prior faces of a pixel that becomes trimmed, TV_ID_PRIOR). The dilated
 // pass (TV_PVS_KIND_WIDE, see pvs_face.vert) writes the wide visibility buffer and, at pixels whose
 // centre the undilated triangle does not cover: flags the triangle when all
-// of it lies in front of that nearest centre depth (nothing covering the
-// centre hides it, so it is visible from v* through part of the pixel:
-// typically a sub-pixel triangle the raster missed), and inserts a front as
+// of it lies in front of that nearest centre depth, or when its nearest depth
+// inside the pixel ties with it (nothing covering the centre hides it, so it
+// is visible from v* through part of the pixel: typically a sub-pixel
+// triangle the raster missed), and inserts a front as
 // a candidate front, which P3 outputs where it is not hidden but never lets
 // occlude.
 #extension GL_GOOGLE_include_directive : require
@@ -98,9 +99,13 @@ void main()
                 tri_flags[v_triangle] = 1u;
             return;
         }
-        // in front of everything covering the centre: visible from v*
-        // through part of the pixel
-        if (v_far < nearest)
+        // Visible from v* through part of the pixel: in front of everything
+        // covering the centre, or nowhere in the pixel behind the face
+        // covering the centre by more than the tie rule's depth error (a
+        // sub-pixel triangle of the same finely tessellated surface, or of a
+        // surface just behind it: an eye's pixel centre may land on it).
+        float inside = max(v_near, w - 0.5 * slope); // its nearest depth in the pixel
+        if (v_far < nearest || inside <= nearest + slope * TV_PVS_MAX_DILATION_PX)
             tri_flags[v_triangle] = 1u;
         if (kind != TV_PVS_KIND_FRONT)
             return;
@@ -110,7 +115,7 @@ void main()
         // covering the centre does not hide it by comparing centre depths
         // (it never occludes, so nearer only means more output). spill()
         // repeats this.
-        w = max(v_near, w - 0.5 * slope);
+        w = inside;
         id |= TV_ID_CANDIDATE;
     }
     if (pvs_sealed(p))
