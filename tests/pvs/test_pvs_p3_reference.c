@@ -1,0 +1,298 @@
+/* test_pvs_p3_reference.c - P3 on the GPU against its C reference,
+ * pixel by pixel. White-box: it reaches into the context (gpu_internal.h)
+ * to fill the k-buffers and pixel states of a 64x64 PVS with random
+ * sequences (depths from a few values, so ties of every kind occur;
+ * overflowing lists; carried runs and hidden ranges; prior faces), runs the
+ * P3 passes alone, and compares every pixel's output ids, stencil, carry
+ * and hidden range with pvs_resolve_pixel. Each pixel outputs ids from its
+ * own range, so a wrong id cannot hide behind another pixel's. Run once with
+ * every sequence sorted per thread and once with every sequence of two or
+ * more entries sorted by a workgroup (the hybrid sort's two passes). */
+#include "gpu_internal.h"
+#include "render_fixture.h"
+#include "resolve.h"
+#include "test.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SIDE 64u
+#define PIXELS (SIDE * SIDE)
+#define IDS_PER_PIXEL 8u /* triangle ids of pixel p: [p * 8, p * 8 + 8) */
+#define K TV_K_FRONT     /* the reference's capacity, so both truncate alike */
+
+typedef struct slot2 {
+    uint32_t depth_bits, id;
+} slot2; /* one k-buffer slot (uvec2) */
+
+static rnd_context* g_rnd;
+static uint32_t g_seed = 12345u;
+
+static uint32_t rnd_u(uint32_t n)
+{
+    g_seed = g_seed * 1664525u + 1013904223u;
+    return (g_seed >> 8) % n;
+}
+
+static float rnd_depth(void)
+{
+    return 0.1f * (float)(1 + rnd_u(10)); /* few values: ties */
+}
+
+/* List length: mostly short, sometimes long, sometimes overflowing. */
+static uint32_t rnd_count(void)
+{
+    uint32_t r = rnd_u(20);
+    return r < 14 ? rnd_u(5) : r < 19 ? rnd_u(K + 1) : K + 1 + rnd_u(4);
+}
+
+typedef struct case_data {
+    pvs_kbuf kbuf[PIXELS];
+    pvs_pixel_state state[PIXELS];
+} case_data;
+
+static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
+{
+    memset(kb, 0, sizeof *kb);
+    memset(st, 0, sizeof *st);
+    uint32_t base = p * IDS_PER_PIXEL, r = rnd_u(10);
+    st->stencil = r < 4 ? TV_STENCIL_UNTRIMMED : r < 8 ? TV_STENCIL_TRIMMED : r < 9 ? TV_STENCIL_SEALED
+                                                                                   : TV_STENCIL_OVERFLOW;
+    kb->front_count = rnd_count();
+    kb->back_count = rnd_count();
+    kb->trim_count = st->stencil == TV_STENCIL_UNTRIMMED && rnd_u(4) == 0 ? 0 : rnd_count();
+    kb->umbra_count = rnd_count();
+    for (uint32_t i = 0; i < K; i++) {
+        kb->front_depth[i] = rnd_depth();
+        kb->front_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) | (rnd_u(4) == 0 ? TV_ID_CANDIDATE : 0u);
+        kb->back_depth[i] = rnd_depth();
+        kb->back_tri[i] = base + rnd_u(IDS_PER_PIXEL);
+        kb->trim_depth[i] = rnd_depth();
+        kb->trim_region[i] = rnd_u(6);
+        kb->umbra_depth[i] = rnd_depth() + 0.05f * (float)rnd_u(3);
+        kb->umbra_region[i] = rnd_u(6);
+    }
+    kb->nearest_front = rnd_u(2) ? rnd_depth() : INFINITY;
+    kb->nearest_back = rnd_u(2) ? rnd_depth() : INFINITY;
+    kb->front_lost = rnd_u(8) == 0 ? rnd_depth() : 0.0f;
+    if (st->stencil != TV_STENCIL_TRIMMED)
+        return;
+    /* a carried run: a front, then fronts, trims and their umbrae, in depth order */
+    uint32_t n = rnd_u(6);
+    float d = rnd_depth();
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t kind = i == 0 ? TV_ENTRY_FRONT : rnd_u(3) == 0 ? TV_ENTRY_UMBRA : rnd_u(2) ? TV_ENTRY_TRIM
+                                                                                          : TV_ENTRY_FRONT;
+        uint32_t id = kind == TV_ENTRY_FRONT ? base + rnd_u(IDS_PER_PIXEL) : rnd_u(6);
+        st->carry[st->carry_count++] = (pvs_entry){d, kind, id};
+        d += 0.1f * (float)rnd_u(2);
+    }
+    if (rnd_u(3) == 0) {
+        st->hide_begin = rnd_depth();
+        st->hide_end = st->hide_begin + 0.1f * (float)(1 + rnd_u(3));
+    }
+}
+
+static uint32_t fbits(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+/* Host-visible copies of the buffers this test writes or reads. */
+static bool make_host_visible(pvs_context* ctx)
+{
+    const uint32_t bindings[] = {TV_PVS_BIND_KFRONT, TV_PVS_BIND_KBACK, TV_PVS_BIND_KTRIM,
+                                 TV_PVS_BIND_KUMBRA, TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE,
+                                 TV_PVS_BIND_CARRY, TV_PVS_BIND_ACTIVE_LIST, TV_PVS_BIND_CENTRE_DEPTH,
+                                 TV_PVS_BIND_FRONT_LOST, TV_PVS_BIND_ACTIVE};
+    char err[256];
+    for (size_t i = 0; i < sizeof bindings / sizeof bindings[0]; i++) {
+        rnd_buffer* b = &ctx->buffers[bindings[i]];
+        VkDeviceSize size = b->size;
+        rnd_buffer_destroy(ctx->rnd, b);
+        if (!rnd_buffer_create(ctx->rnd, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                               true, b, err, sizeof err)) {
+            fprintf(stderr, "%s\n", err);
+            return false;
+        }
+    }
+    pvs_write_descriptors(ctx);
+    return true;
+}
+
+static void upload(pvs_context* ctx, const case_data* c)
+{
+    uint32_t k = ctx->k;
+    slot2* kf = ctx->buffers[TV_PVS_BIND_KFRONT].mapped;
+    slot2* kbk = ctx->buffers[TV_PVS_BIND_KBACK].mapped;
+    slot2* kt = ctx->buffers[TV_PVS_BIND_KTRIM].mapped;
+    slot2* ku = ctx->buffers[TV_PVS_BIND_KUMBRA].mapped;
+    uint32_t* cnt = ctx->buffers[TV_PVS_BIND_PIXCOUNT].mapped;
+    uint32_t* ps = ctx->buffers[TV_PVS_BIND_PIXSTATE].mapped;
+    uint32_t* carry = ctx->buffers[TV_PVS_BIND_CARRY].mapped;
+    uint32_t* active = ctx->buffers[TV_PVS_BIND_ACTIVE_LIST].mapped;
+    uint32_t* centre = ctx->buffers[TV_PVS_BIND_CENTRE_DEPTH].mapped;
+    uint32_t* lost = ctx->buffers[TV_PVS_BIND_FRONT_LOST].mapped;
+    for (uint32_t p = 0; p < PIXELS; p++) {
+        const pvs_kbuf* kb = &c->kbuf[p];
+        const pvs_pixel_state* st = &c->state[p];
+        for (uint32_t i = 0; i < k; i++) {
+            kf[p * k + i] = (slot2){fbits(kb->front_depth[i]), kb->front_tri[i]};
+            kbk[p * k + i] = (slot2){fbits(kb->back_depth[i]), kb->back_tri[i]};
+            kt[p * k + i] = (slot2){fbits(kb->trim_depth[i]), kb->trim_region[i]};
+            ku[p * k + i] = (slot2){fbits(kb->umbra_depth[i]), kb->umbra_region[i]};
+        }
+        uint32_t counts[4] = {kb->front_count, kb->back_count, kb->trim_count, kb->umbra_count};
+        memcpy(cnt + 4 * p, counts, sizeof counts);
+        uint32_t state[4] = {st->stencil, st->carry_count, fbits(st->hide_begin), fbits(st->hide_end)};
+        memcpy(ps + 4 * p, state, sizeof state);
+        for (uint32_t i = 0; i < st->carry_count; i++) {
+            uint32_t e[4] = {fbits(st->carry[i].depth), st->carry[i].kind, st->carry[i].id, 0};
+            memcpy(carry + 4 * (p * TV_K_CARRY + i), e, sizeof e);
+        }
+        active[p] = p;
+        centre[2 * p] = fbits(kb->nearest_front);
+        centre[2 * p + 1] = fbits(kb->nearest_back);
+        lost[2 * p] = kb->front_lost > 0.0f ? fbits(kb->front_lost) : fbits(INFINITY);
+        lost[2 * p + 1] = fbits(INFINITY);
+    }
+    memset(ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped, 0, ctx->buffers[TV_PVS_BIND_TRI_FLAGS].size);
+    memset(ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped, 0, ctx->buffers[TV_PVS_BIND_LAYER_STATS].size);
+    uint32_t* counters = ctx->buffers[TV_PVS_BIND_COUNTERS].mapped;
+    memset(counters, 0, TV_PVS_C_COUNT * sizeof(uint32_t));
+    counters[TV_PVS_C_ACTIVE] = PIXELS;
+    counters[TV_PVS_C_DISPATCH] = (PIXELS + TV_WG_SIZE - 1) / TV_WG_SIZE;
+    counters[TV_PVS_C_DISPATCH + 1] = counters[TV_PVS_C_DISPATCH + 2] = 1;
+    counters[TV_PVS_C_DISPATCH_COOP + 1] = counters[TV_PVS_C_DISPATCH_COOP + 2] = 1;
+    pvs_view_gpu* view = ctx->buffers[TV_PVS_BIND_VIEW].mapped;
+    memset(view, 0, sizeof *view);
+    view->width = view->height = SIDE;
+    view->k = k;
+    view->triangle_count = ctx->triangle_count;
+}
+
+static bool run_p3(pvs_context* ctx)
+{
+    char err[256];
+    if (!rnd_stream_begin(ctx->rnd, &ctx->stream, err, sizeof err))
+        return false;
+    VkCommandBuffer cmd = ctx->stream.cmd;
+    VkDescriptorSet sets[2];
+    sets[TV_SET_SCENE] = ctx->gpu->set;
+    sets[TV_PVS_SET] = ctx->set;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->layout, 0, 2, sets, 0, NULL);
+    pvs_push push = {0};
+    vkCmdPushConstants(cmd, ctx->layout,
+                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                       sizeof push, &push);
+    VkMemoryBarrier2 mb = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                           .srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                           .srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT,
+                           .dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                           .dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+    VkDependencyInfo dep = {.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
+                            .pMemoryBarriers = &mb};
+    VkBuffer counters = ctx->buffers[TV_PVS_BIND_COUNTERS].buffer;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE]);
+    vkCmdDispatchIndirect(cmd, counters, TV_PVS_C_DISPATCH * sizeof(uint32_t));
+    vkCmdPipelineBarrier2(cmd, &dep);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE_GROUP]);
+    vkCmdDispatchIndirect(cmd, counters, TV_PVS_C_DISPATCH_COOP * sizeof(uint32_t));
+    VkMemoryBarrier2 host = mb;
+    host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+    host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    dep.pMemoryBarriers = &host;
+    vkCmdPipelineBarrier2(cmd, &dep);
+    if (!rnd_stream_submit_wait(ctx->rnd, &ctx->stream, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        return false;
+    }
+    return true;
+}
+
+/* Compares every pixel; returns the number that differ (the first few printed). */
+static uint32_t compare(pvs_context* ctx, case_data* c)
+{
+    const uint32_t* flags = ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped;
+    const uint32_t* ps = ctx->buffers[TV_PVS_BIND_PIXSTATE].mapped;
+    const uint32_t* carry = ctx->buffers[TV_PVS_BIND_CARRY].mapped;
+    uint32_t bad = 0;
+    for (uint32_t p = 0; p < PIXELS; p++) {
+        uint32_t out[PVS_RESOLVE_MAX_OUTPUT], want = 0, got = 0;
+        bool overflowed;
+        uint32_t n = pvs_resolve_pixel(&c->state[p], &c->kbuf[p], out, &overflowed);
+        for (uint32_t i = 0; i < n; i++)
+            want |= 1u << (out[i] - p * IDS_PER_PIXEL);
+        for (uint32_t i = 0; i < IDS_PER_PIXEL; i++)
+            got |= flags[p * IDS_PER_PIXEL + i] ? 1u << i : 0u;
+        const pvs_pixel_state* st = &c->state[p];
+        bool same = want == got && ps[4 * p] == st->stencil && ps[4 * p + 1] == st->carry_count;
+        if (same && st->hide_begin < st->hide_end)
+            same = ps[4 * p + 2] == fbits(st->hide_begin) && ps[4 * p + 3] == fbits(st->hide_end);
+        for (uint32_t i = 0; same && i < st->carry_count; i++) {
+            const uint32_t* e = carry + 4 * (p * TV_K_CARRY + i);
+            same = e[0] == fbits(st->carry[i].depth) && e[1] == st->carry[i].kind && e[2] == st->carry[i].id;
+        }
+        if (!same && bad++ < 5)
+            printf("  pixel %u: ids 0x%02x (reference 0x%02x), stencil %u (%u), carry %u (%u)\n", p, got, want,
+                   ps[4 * p], st->stencil, ps[4 * p + 1], st->carry_count);
+    }
+    return bad;
+}
+
+static void check(uint32_t coop_sort_min, const char* what)
+{
+    scn_scene scene = {0};
+    char err[512];
+    /* only its triangle count matters: the tri_flags buffer holds every pixel's ids */
+    TV_CHECK(scn_load("builtin:city?tris=40000", &scene, err, sizeof err));
+    TV_CHECK(scene.triangle_count >= PIXELS * IDS_PER_PIXEL);
+    rnd_gpu_scene* gpu = rnd_scene_create(g_rnd, &scene, err, sizeof err);
+    pvs_context* ctx = gpu ? pvs_create(g_rnd, &scene, gpu,
+                                        &(pvs_desc){.width = SIDE, .height = SIDE, .k = K,
+                                                    .coop_sort_min = coop_sort_min},
+                                        err, sizeof err)
+                           : NULL;
+    case_data* c = malloc(sizeof *c);
+    TV_CHECK(ctx && c && make_host_visible(ctx));
+    if (ctx && c) {
+        for (uint32_t p = 0; p < PIXELS; p++)
+            make_pixel(p, &c->kbuf[p], &c->state[p]);
+        upload(ctx, c);
+        TV_CHECK(run_p3(ctx));
+        uint32_t coop = ((const uint32_t*)ctx->buffers[TV_PVS_BIND_COUNTERS].mapped)[TV_PVS_C_COOP_TOTAL];
+        uint32_t bad = compare(ctx, c);
+        printf("  %s: %u of %u pixels differ from pvs_resolve_pixel (%u sorted by a workgroup)\n", what, bad,
+               PIXELS, coop);
+        TV_CHECK(bad == 0);
+        TV_CHECK(coop_sort_min == UINT32_MAX ? coop == 0 : coop > PIXELS / 4);
+    }
+    free(c);
+    pvs_destroy(ctx);
+    rnd_scene_destroy(g_rnd, gpu);
+    scn_scene_free(&scene);
+}
+
+static void test_per_thread(void)
+{
+    check(UINT32_MAX, "per thread");
+}
+
+static void test_workgroups(void)
+{
+    check(2, "workgroups");
+}
+
+int main(void)
+{
+    g_rnd = fx_context();
+    TV_TEST_RUN(test_per_thread);
+    TV_TEST_RUN(test_workgroups);
+    TV_CHECK(rnd_validation_message_count(g_rnd) == 0);
+    rnd_destroy(g_rnd);
+    return tv_test_finish();
+}
