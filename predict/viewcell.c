@@ -163,10 +163,17 @@ bool pred_viewcell_size(const pred_viewcell_desc* desc, const pred_predictor* pr
     if (tracker) {
         double horizon = t0 + d.window_s - pred_history_get(&predictor->history, 0)->t;
         pred_error_tracker_bound(tracker, horizon, d.quantile, &pos_err, &rot_err);
-        if (_records_at(tracker, horizon) < (uint64_t)d.warmup_records) {
+        double pos_max, rot_max, rot_prior = d.warmup_rot_dps * horizon;
+        pred_error_tracker_bound(tracker, horizon, 1.0, &pos_max, &rot_max);
+        bool warm = _records_at(tracker, horizon) >= (uint64_t)d.warmup_records;
+        if (!warm)
             pos_err = fmax(pos_err, d.warmup_pos_mps * horizon);
-            rot_err = fmax(rot_err, d.warmup_rot_dps * horizon);
-        }
+        /* A calm start teaches the tracker nothing about turns: its quantile
+         * would size the FOV for calm motion and the first fast turn would
+         * leave it. So the rotation prior holds until the window has seen an
+         * error as large as the prior itself. */
+        if (!warm || rot_max < rot_prior)
+            rot_err = fmax(rot_err, rot_prior);
     }
     /* with an even count no sample sits at the middle: size around the nearer-to-middle one */
     pred_viewcell_from_poses(&d, heads, n, n / 2, pos_err, rot_err, out);

@@ -47,7 +47,11 @@ typedef struct pred_viewcell_desc {
     /* ADAPTIVE warm-up: until the tracker holds warmup_records errors at the
      * sizing horizon, the error bounds are at least these rates times the
      * horizon. A predictor that has just started extrapolates sensor noise,
-     * and an empty tracker would otherwise claim zero error. */
+     * and an empty tracker would otherwise claim zero error. The rotation
+     * prior holds longer: until the tracker's window holds a rotation error
+     * at least as large as the prior (a calm start says nothing about turns;
+     * 100 deg/s matches the worst p99 of real people's heads at 50-100 ms,
+     * docs/prediction.md). */
     int warmup_records;      /* 50 */
     float warmup_pos_mps;    /* 1.0 m/s */
     float warmup_rot_dps;    /* 100 deg/s */
@@ -92,8 +96,9 @@ void pred_viewcell_from_poses(const pred_viewcell_desc* desc, const pred_pose* h
 /* Predicts the window's poses with `predictor` and sizes the viewcell; the
  * error bounds are the tracker's `quantile` at the horizon from the newest
  * sample to the window end, raised to the warm-up prior while the tracker has
- * too few records there (tracker may be NULL: zero bounds, no prior). False
- * when the predictor has no samples yet. */
+ * too few records there, and the rotation bound also while no recorded
+ * rotation error there reaches the prior (tracker may be NULL: zero bounds,
+ * no prior). False when the predictor has no samples yet. */
 bool pred_viewcell_size(const pred_viewcell_desc* desc, const pred_predictor* predictor,
                         const pred_error_tracker* tracker, double t_request, pred_viewcell* out);
 
