@@ -17,7 +17,7 @@ static const char* const k_cols[] = {
     "fng_fraction", "fng_reliable_pixels_mean", "psnr_mean_db", "psnr_min_db", "pvs_ms", "gt_ms",
     "full_render_ms", "full_render_pvsres_ms", "pvs_over_full", "pvs_over_gt_ms", "p0_ms", "p1_ms", "p2_ms",
     "p3_ms", "p4_ms", "layers", "active_pixels", "mean_trim_sequence", "kbuffer_alloc_bytes",
-    "kbuffer_used_bytes", "overflow_pixels", "views"};
+    "kbuffer_used_bytes", "overflow_pixels", "views", "fng_fraction_worst_cell", "psnr_worst_cell_db"};
 enum { COL_COUNT = (int)(sizeof k_cols / sizeof k_cols[0]) };
 
 static double ratio(double a, double b)
@@ -36,7 +36,8 @@ static void row_values(const tv_bench_row* r, double* v)
         m->psnr_min_db, r->mean.pvs_ms, m->gt_ms, m->full_render_ms, r->full_pvsres_ms,
         ratio(r->mean.pvs_ms, r->full_pvsres_ms), ratio(r->mean.pvs_ms, m->gt_ms), tr->ms[0], tr->ms[1], tr->ms[2],
         tr->ms[3], tr->ms[4], tr->layers, (double)tr->active_pixels, tr->mean_sequence, (double)tr->kbuffer_bytes,
-        (double)tr->kbuffer_bytes_used, (double)tr->overflow_pixels, r->views};
+        (double)tr->kbuffer_bytes_used, (double)tr->overflow_pixels, r->views, r->fng_fraction_worst_cell,
+        r->psnr_worst_cell_db};
     memcpy(v, x, sizeof x);
 }
 
@@ -107,7 +108,9 @@ static bool write_json(const char* dir, const tv_bench_info* in, const tv_bench_
         tv_json_num(f, "full_render_pvsres_ms", r->full_pvsres_ms, ", ");
         tv_json_num(f, "pvs_over_full", ratio(r->mean.pvs_ms, r->full_pvsres_ms), ", ");
         tv_json_num(f, "pvs_over_gt_ms", ratio(r->mean.pvs_ms, r->mean.m.gt_ms), ", ");
-        tv_json_num(f, "pvs_over_gt_tris", ratio(r->mean.m.pvs_fraction, r->mean.m.gt_fraction), ",\n");
+        tv_json_num(f, "pvs_over_gt_tris", ratio(r->mean.m.pvs_fraction, r->mean.m.gt_fraction), ", ");
+        tv_json_num(f, "fng_fraction_worst_cell", r->fng_fraction_worst_cell, ", ");
+        tv_json_num(f, "psnr_worst_cell_db", r->psnr_worst_cell_db, ",\n");
         tv_eval_json_metrics(f, &r->mean, "     ");
         fprintf(f, "}%s\n", i + 1 < n ? "," : "");
     }

@@ -18,6 +18,10 @@ typedef struct tv_bench_row {
     tv_eval_cell mean;      /* tv_eval_mean over the viewcells */
     uint32_t views;         /* id-buffer views the method rendered per viewcell (gt, sas, frompoint) */
     double full_pvsres_ms;  /* median full-scene draw at the PVS resolution and FOV, same run */
+    /* the worst viewcell: its FN pixels per view (fraction of the image) and
+     * the PSNR of its views' mean squared error (the issue's bar holds "at
+     * every sampled viewcell") */
+    double fng_fraction_worst_cell, psnr_worst_cell_db;
 } tv_bench_row;
 
 typedef struct tv_bench_info {

@@ -186,6 +186,11 @@ static bool bench_method(bench_run* b, const char* spec, const tv_app_scene* s, 
             r->mean = tv_eval_mean(cells, n);
             r->views = cells[0].st.views;
             r->full_pvsres_ms = full_render_ms(o, s, cells, n);
+            r->psnr_worst_cell_db = INFINITY;
+            for (int i = 0; i < n; i++) {
+                r->fng_fraction_worst_cell = fmax(r->fng_fraction_worst_cell, cells[i].m.fng_fraction_mean);
+                r->psnr_worst_cell_db = fmin(r->psnr_worst_cell_db, cells[i].m.psnr_mean_db);
+            }
             const pvs_eval_result* x = &r->mean.m;
             fprintf(stderr, "bench %s: %-9s delta %4.2f: %d cells, PVS %.2f%% (GT %.2f%%), FP %.3f, FN %.4f, "
                             "FNG %.1f px, PSNR %.1f dB, PVS %.0f ms, GT %.0f ms [%s]\n",
