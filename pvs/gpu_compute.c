@@ -114,19 +114,44 @@ static void write_view(pvs_context* ctx, const pvs_viewcell* vc, const rnd_camer
     memcpy(ctx->buffers[TV_PVS_BIND_VIEW].mapped, &g, sizeof g);
 }
 
-static void barrier(VkCommandBuffer cmd)
+/* All writes of the commands so far made visible to `dst_stage` / `dst_access`. */
+static void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access)
 {
-    /* Each phase consumes everything the previous one wrote (buffers, the
-     * indirect commands, attachments), so one full memory barrier suffices;
-     * the passes are far coarser than its cost. */
     VkMemoryBarrier2 mb = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
                            .srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                            .srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT,
-                           .dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                           .dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
+                           .dstStageMask = dst_stage,
+                           .dstAccessMask = dst_access};
     VkDependencyInfo dep = {.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
                             .pMemoryBarriers = &mb};
     vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+/* Each phase consumes everything the previous one wrote (buffers, the
+ * indirect commands, attachments), so one full memory barrier suffices; the
+ * passes are far coarser than its cost. */
+static void barrier(VkCommandBuffer cmd)
+{
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                   VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+}
+
+void pvs_host_barrier(VkCommandBuffer cmd)
+{
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+}
+
+void pvs_record_resolve(pvs_context* ctx, VkCommandBuffer cmd)
+{
+    VkBuffer counters = ctx->buffers[TV_PVS_BIND_COUNTERS].buffer;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE]);
+    vkCmdDispatchIndirect(cmd, counters, TV_PVS_C_DISPATCH * sizeof(uint32_t));
+    barrier(cmd);
+    if (ctx->coop_sort_min == PVS_NEVER_COOP)
+        return;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE_GROUP]);
+    vkCmdDispatchIndirect(cmd, counters, TV_PVS_C_DISPATCH_COOP * sizeof(uint32_t)); /* empty unless pixels were deferred */
+    barrier(cmd);
 }
 
 /* Per-layer slots of the counters buffer (empty draws, an empty dispatch)
@@ -280,13 +305,7 @@ static void record(pvs_context* ctx, VkCommandBuffer cmd)
         render_pass(ctx, cmd, 1, PASS_LAYER);
         barrier(cmd);
         timestamp(ctx, cmd, &ts);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE]);
-        vkCmdDispatchIndirect(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, TV_PVS_C_DISPATCH * sizeof(uint32_t));
-        barrier(cmd);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE_GROUP]);
-        vkCmdDispatchIndirect(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer,
-                              TV_PVS_C_DISPATCH_COOP * sizeof(uint32_t)); /* empty unless pixels were deferred */
-        barrier(cmd);
+        pvs_record_resolve(ctx, cmd);
         render_pass(ctx, cmd, 0, PASS_SPILL); /* both empty unless P3 asked for them */
         render_pass(ctx, cmd, 1, PASS_SPILL);
         barrier(cmd);
@@ -294,14 +313,7 @@ static void record(pvs_context* ctx, VkCommandBuffer cmd)
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_GATHER]);
     vkCmdDispatch(cmd, (ctx->width + 7) / 8, (ctx->height + 7) / 8, 1);
-    VkMemoryBarrier2 host = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                             .srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                             .srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT,
-                             .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
-                             .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
-    vkCmdPipelineBarrier2(cmd, &(VkDependencyInfo){.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-                                                   .memoryBarrierCount = 1,
-                                                   .pMemoryBarriers = &host});
+    pvs_host_barrier(cmd);
     timestamp(ctx, cmd, &ts);
 }
 

@@ -19,7 +19,6 @@
  * pass resolves eight (Sponza, 90k of 481k resolves deferred: P3 640 ->
  * 1890 ms), so there sequences are never deferred unless the caller asks. */
 #define PVS_DEFAULT_COOP_SORT_MIN 8u
-#define PVS_NEVER_COOP UINT32_MAX
 
 static const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 

@@ -65,12 +65,21 @@ struct pvs_context {
     uint32_t* result; /* sorted ids of the last computation */
 };
 
+#define PVS_NEVER_COOP UINT32_MAX /* coop_sort_min: every sequence sorted per thread */
+
 #define PVS_VIS_ID_FORMAT VK_FORMAT_R32_UINT
 #define PVS_VIS_DEPTH_FORMAT VK_FORMAT_D32_SFLOAT
 
 /* gpu_pipelines.c: the set layout, pipeline layout and the eight pipelines. */
 bool pvs_pipelines_create(pvs_context* ctx, char* err, size_t err_size);
 void pvs_pipelines_destroy(pvs_context* ctx);
+
+/* gpu_compute.c: P3 of the current layer (descriptor sets and push constants
+ * bound): the per-thread pass, then the cooperative pass unless sequences are
+ * never deferred, each followed by a full memory barrier. */
+void pvs_record_resolve(pvs_context* ctx, VkCommandBuffer cmd);
+/* Makes every write so far visible to host reads. */
+void pvs_host_barrier(VkCommandBuffer cmd);
 
 /* gpu_context.c: (re)writes every descriptor of ctx->set. */
 void pvs_write_descriptors(pvs_context* ctx);

@@ -614,17 +614,7 @@ static void test_fine_tessellation(void)
             fx_quad(&f.scene, q, m);
         }
     }
-    scn_scene_update_bounds(&f.scene);
-    fixture_open(&f, 0);
-    pvs_result r;
-    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.1f);
-    TV_CHECK(compute(&f, &vc, &r));
-    TV_CHECK(apex_fn(&f, &r, &vc) == 0);
-    uint32_t at_v0, worst = cone_fn(&f, &r, &vc, &at_v0);
-    printf("  %u of %u wall triangles; FN pixels: %u at v0 (3 renders), worst cone sample %u\n", r.count,
-           f.scene.triangle_count, at_v0, worst);
-    TV_CHECK(at_v0 == 0 && worst == 0);
-    fixture_close(&f);
+    check_configuration(&f, "a bumpy wall of sub-pixel triangles", 0.1f, FN_SIMPLE, NULL, 0, NULL, 0);
 }
 
 /* ---- k = 1: overflow is counted and loses nothing ---- */

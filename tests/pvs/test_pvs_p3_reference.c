@@ -178,8 +178,10 @@ static void upload(pvs_context* ctx, const case_data* c)
 static bool run_p3(pvs_context* ctx)
 {
     char err[256];
-    if (!rnd_stream_begin(ctx->rnd, &ctx->stream, err, sizeof err))
+    if (!rnd_stream_begin(ctx->rnd, &ctx->stream, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
         return false;
+    }
     VkCommandBuffer cmd = ctx->stream.cmd;
     VkDescriptorSet sets[2];
     sets[TV_SET_SCENE] = ctx->gpu->set;
@@ -189,24 +191,8 @@ static bool run_p3(pvs_context* ctx)
     vkCmdPushConstants(cmd, ctx->layout,
                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, 0,
                        sizeof push, &push);
-    VkMemoryBarrier2 mb = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                           .srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                           .srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT,
-                           .dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                           .dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
-    VkDependencyInfo dep = {.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1,
-                            .pMemoryBarriers = &mb};
-    VkBuffer counters = ctx->buffers[TV_PVS_BIND_COUNTERS].buffer;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE]);
-    vkCmdDispatchIndirect(cmd, counters, TV_PVS_C_DISPATCH * sizeof(uint32_t));
-    vkCmdPipelineBarrier2(cmd, &dep);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_RESOLVE_GROUP]);
-    vkCmdDispatchIndirect(cmd, counters, TV_PVS_C_DISPATCH_COOP * sizeof(uint32_t));
-    VkMemoryBarrier2 host = mb;
-    host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    dep.pMemoryBarriers = &host;
-    vkCmdPipelineBarrier2(cmd, &dep);
+    pvs_record_resolve(ctx, cmd);
+    pvs_host_barrier(cmd);
     if (!rnd_stream_submit_wait(ctx->rnd, &ctx->stream, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         return false;
