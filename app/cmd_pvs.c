@@ -56,8 +56,8 @@ int tv_cmd_pvs(int argc, char** argv)
     pred_viewcell vc;
     if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc) ||
         k < 0 || coop_min < 0) {
-        fprintf(stderr, "trimvr pvs: error: need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "
-                        "FOVs in (0, 180) (see trimvr pvs --help)\n");
+        fprintf(stderr, "trimvr pvs: error: need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0, "
+                        "FOVs in (0, 180) and --k, --coop-min >= 0 (see trimvr pvs --help)\n");
         return 2;
     }
     tv_app_scene s;
