@@ -17,7 +17,8 @@ static const char* const k_cols[] = {
     "fng_fraction", "fng_reliable_pixels_mean", "psnr_mean_db", "psnr_min_db", "pvs_ms", "gt_ms",
     "full_render_ms", "full_render_pvsres_ms", "pvs_over_full", "pvs_over_gt_ms", "p0_ms", "p1_ms", "p2_ms",
     "p3_ms", "p4_ms", "layers", "active_pixels", "mean_trim_sequence", "kbuffer_alloc_bytes",
-    "kbuffer_used_bytes", "overflow_pixels", "views", "fng_fraction_worst_cell", "psnr_worst_cell_db"};
+    "kbuffer_used_bytes", "overflow_pixels", "views", "fng_fraction_worst_cell", "psnr_worst_cell_db",
+    "gt_completeness", "gt_est_tris", "pvs_over_gt_est_tris"};
 enum { COL_COUNT = (int)(sizeof k_cols / sizeof k_cols[0]) };
 
 static double ratio(double a, double b)
@@ -37,7 +38,7 @@ static void row_values(const tv_bench_row* r, double* v)
         ratio(r->mean.pvs_ms, r->full_pvsres_ms), ratio(r->mean.pvs_ms, m->gt_ms), tr->ms[0], tr->ms[1], tr->ms[2],
         tr->ms[3], tr->ms[4], tr->layers, (double)tr->active_pixels, tr->mean_sequence, (double)tr->kbuffer_bytes,
         (double)tr->kbuffer_bytes_used, (double)tr->overflow_pixels, r->views, r->fng_fraction_worst_cell,
-        r->psnr_worst_cell_db};
+        r->psnr_worst_cell_db, m->gt_completeness, m->gt_est_tris, ratio(m->pvs_tris, m->gt_est_tris)};
     memcpy(v, x, sizeof x);
 }
 
@@ -122,19 +123,20 @@ static void md_tables(FILE* f, const tv_bench_row* rows, int first, int end)
 {
     fprintf(f, "\n### %s (%u triangles, %d viewcells)\n\n", rows[first].scene, rows[first].mean.m.scene_tris,
             rows[first].cells);
-    fprintf(f, "| method | Δ cm | PVS %% | GT %% | PVS/GT | FP | FN | FP* | FN* | FNG px | FNG %% | PSNR dB | "
-               "PSNR min | PVS ms | GT ms | full ms | PVS/full | PVS/GT ms |\n");
-    fprintf(f, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    fprintf(f, "| method | Δ cm | PVS %% | GT %% | PVS/GT | GT compl. | PVS/GT est | FP | FN | FP* | FN* | FNG px | "
+               "FNG %% | PSNR dB | PSNR min | PVS ms | GT ms | full ms | PVS/full | PVS/GT ms |\n");
+    fprintf(f, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     bool any_tr = false;
     for (int i = first; i < end; i++) {
         const tv_bench_row* r = &rows[i];
         const pvs_eval_result* m = &r->mean.m;
         any_tr = any_tr || r->method == PVS_METHOD_TR;
         fprintf(f,
-                "| %s | %.0f | %.2f | %.2f | %.2f | %.3f | %.4f | %.3f | %.4f | %.1f | %.4f | %.1f | %.1f | %.0f | "
-                "%.0f | %.1f | %.1f | %.2f |\n",
+                "| %s | %.0f | %.2f | %.2f | %.2f | %.2f | %.2f | %.3f | %.4f | %.3f | %.4f | %.1f | %.4f | %.1f | %.1f | "
+                "%.0f | %.0f | %.1f | %.1f | %.2f |\n",
                 pvs_method_name(r->method), 100.0 * r->delta, 100.0 * m->pvs_fraction, 100.0 * m->gt_fraction,
-                ratio(m->pvs_fraction, m->gt_fraction), m->fp_rate, m->fn_rate, m->fp_rate_reliable,
+                ratio(m->pvs_fraction, m->gt_fraction), m->gt_completeness, ratio(m->pvs_tris, m->gt_est_tris),
+                m->fp_rate, m->fn_rate, m->fp_rate_reliable,
                 m->fn_rate_reliable, m->fng_pixels_mean, 100.0 * m->fng_fraction_mean, m->psnr_mean_db,
                 m->psnr_min_db, r->mean.pvs_ms, m->gt_ms, r->full_pvsres_ms, ratio(r->mean.pvs_ms, r->full_pvsres_ms),
                 ratio(r->mean.pvs_ms, m->gt_ms));
@@ -166,7 +168,9 @@ static bool write_md(const char* dir, const tv_bench_info* in, const tv_bench_ro
                "(eye FOV %.0f°); PVS resolution %ux%u, PVS FOV %.0f°.\n",
             in->command_line, in->date, in->device, in->wall_s, in->samples, in->res[0], in->res[1], in->fov,
             in->pvs_res[0], in->pvs_res[1], in->fov_pvs);
-    fprintf(f, "\nColumns: PVS/GT = PVS size over ground-truth size; FP, FN = false-positive and false-negative "
+    fprintf(f, "\nColumns: PVS/GT = PVS size over ground-truth size; GT compl. = GT size over its Chao2 estimate "
+               "from the triangles seen in one and in two views (how complete the sampled GT is), PVS/GT est = "
+               "PVS size over that estimate; FP, FN = false-positive and false-negative "
                "rates over the GT size, * without unreliable triangles; FNG = false-negative pixels per GT view "
                "(mean); PSNR of PVS renders against full renders (mean of MSE, and worst view); PVS ms = wall "
                "clock of one PVS; GT ms = the id renders of the ground truth; full ms = one full-scene draw at "

@@ -150,8 +150,11 @@ int tv_cmd_eval(int argc, char** argv)
             fprintf(stderr, "trimvr eval: error: out of memory\n");
             status = 1;
         }
-        fprintf(stderr, "viewcell %d/%d: PVS %u (%.2f%%), GT %u, FP %.2f, FN %.4f, FNG %.1f px, PSNR min %.1f dB\n",
+        fprintf(stderr,
+                "viewcell %d/%d: PVS %u (%.2f%%), GT %u (%.0f%% complete), FP %.2f, FN %.4f, FNG %.1f px, "
+                "PSNR min %.1f dB\n",
                 i + 1, n, cells[i].m.pvs_tris, 100.0 * cells[i].m.pvs_fraction, cells[i].m.gt_tris,
+                100.0 * cells[i].m.gt_completeness,
                 cells[i].m.fp_rate, cells[i].m.fn_rate, cells[i].m.fng_pixels_mean, cells[i].m.psnr_min_db);
     }
     if (status == 0 && (!write_json(&o, spec, cells, n) ||

@@ -211,6 +211,10 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
         m->fn_rate += x->fn_rate / n;
         m->fp_rate_reliable += x->fp_rate_reliable / n;
         m->fn_rate_reliable += x->fn_rate_reliable / n;
+        m->gt_once += x->gt_once / (uint32_t)n;
+        m->gt_twice += x->gt_twice / (uint32_t)n;
+        m->gt_est_tris += x->gt_est_tris / n;
+        m->gt_completeness += x->gt_completeness / n;
         m->fng_pixels_mean += x->fng_pixels_mean / n;
         m->fng_pixels_max = fmax(m->fng_pixels_max, x->fng_pixels_max);
         m->fng_fraction_mean += x->fng_fraction_mean / n;
@@ -260,6 +264,11 @@ void tv_eval_json_metrics(FILE* f, const tv_eval_cell* c, const char* indent)
     fprintf(f, "%s", indent);
     tv_json_num(f, "fp_rate_reliable", m->fp_rate_reliable, ", ");
     tv_json_num(f, "fn_rate_reliable", m->fn_rate_reliable, ",\n");
+    fprintf(f, "%s", indent);
+    tv_json_num(f, "gt_once", m->gt_once, ", ");
+    tv_json_num(f, "gt_twice", m->gt_twice, ", ");
+    tv_json_num(f, "gt_est_tris", m->gt_est_tris, ", ");
+    tv_json_num(f, "gt_completeness", m->gt_completeness, ",\n");
     fprintf(f, "%s", indent);
     tv_json_num(f, "fng_pixels_mean", m->fng_pixels_mean, ", ");
     tv_json_num(f, "fng_pixels_max", m->fng_pixels_max, ", ");

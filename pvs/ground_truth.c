@@ -177,8 +177,17 @@ void pvs_unreliable_mask(const scn_scene* scene, const pred_viewcell* vc, uint32
     }
 }
 
+double pvs_gt_richness_estimate(uint32_t observed, uint32_t once, uint32_t twice, uint32_t views)
+{
+    assert(views >= 1 && (uint64_t)once + twice <= observed);
+    double q1 = once, q2 = twice;
+    return observed + (views - 1.0) / views * q1 * (q1 > 0.0 ? q1 - 1.0 : 0.0) / (2.0 * (q2 + 1.0));
+}
+
 typedef struct eval_buffers {
     uint32_t* ids;
+    uint32_t* last_view; /* per triangle: 1 + the last sample view that saw it, 0 = none */
+    uint8_t* views;      /* per triangle: sample views that saw it, saturating */
     uint8_t* full_rgba;
     uint8_t* pvs_rgba;
     uint8_t* unreliable;
@@ -190,6 +199,8 @@ typedef struct eval_buffers {
 static void free_buffers(eval_buffers* b)
 {
     free(b->ids);
+    free(b->last_view);
+    free(b->views);
     free(b->full_rgba);
     free(b->pvs_rgba);
     free(b->unreliable);
@@ -199,13 +210,16 @@ static void free_buffers(eval_buffers* b)
 }
 
 static void set_metrics(const scn_scene* scene, const uint8_t* pvs_mask, const uint8_t* gt,
-                        const uint8_t* unreliable, pvs_eval_result* out)
+                        const eval_buffers* b, uint32_t views, pvs_eval_result* out)
 {
-    uint32_t pvs = 0, gtc = 0, fp = 0, fn = 0, gt_rel = 0, fp_rel = 0, fn_rel = 0;
+    uint32_t pvs = 0, gtc = 0, fp = 0, fn = 0, gt_rel = 0, fp_rel = 0, fn_rel = 0, once = 0, twice = 0;
+    const uint8_t* unreliable = b->unreliable;
     for (uint32_t t = 0; t < scene->triangle_count; t++) {
         bool in_p = pvs_mask[t] != 0, in_g = gt[t] != 0;
         pvs += in_p;
         gtc += in_g;
+        once += b->views[t] == 1;
+        twice += b->views[t] == 2;
         fp += in_p && !in_g;
         fn += in_g && !in_p;
         if (!unreliable[t]) {
@@ -227,6 +241,10 @@ static void set_metrics(const scn_scene* scene, const uint8_t* pvs_mask, const u
     out->fn_rate = gtc ? (double)fn / gtc : 0.0;
     out->fp_rate_reliable = gt_rel ? (double)fp_rel / gt_rel : 0.0;
     out->fn_rate_reliable = gt_rel ? (double)fn_rel / gt_rel : 0.0;
+    out->gt_once = once;
+    out->gt_twice = twice;
+    out->gt_est_tris = pvs_gt_richness_estimate(gtc, once, twice, views);
+    out->gt_completeness = out->gt_est_tris > 0.0 ? gtc / out->gt_est_tris : 1.0;
 }
 
 bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* scene, const pred_viewcell* vc,
@@ -242,6 +260,8 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
     size_t pixels = (size_t)d.width * d.height;
     eval_buffers b = {
         .ids = malloc(pixels * sizeof(uint32_t)),
+        .last_view = calloc(scene->triangle_count ? scene->triangle_count : 1, sizeof(uint32_t)),
+        .views = calloc(scene->triangle_count ? scene->triangle_count : 1, 1),
         .full_rgba = malloc(pixels * 4),
         .pvs_rgba = malloc(pixels * 4),
         .unreliable = malloc(scene->triangle_count ? scene->triangle_count : 1),
@@ -252,7 +272,7 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
     uint8_t* gt = gt_mask ? gt_mask : calloc(scene->triangle_count ? scene->triangle_count : 1, 1);
     rnd_target* target = NULL;
     bool ok = false;
-    if (!b.ids || !b.full_rgba || !b.pvs_rgba || !b.unreliable || !b.cams || !b.full_ms || !b.pvs_ms || !gt) {
+    if (!b.ids || !b.last_view || !b.views || !b.full_rgba || !b.pvs_rgba || !b.unreliable || !b.cams || !b.full_ms || !b.pvs_ms || !gt) {
         snprintf(err, err_size, "ground truth: out of memory");
         goto done;
     }
@@ -289,6 +309,10 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
             if (id >= scene->triangle_count)
                 continue;
             gt[id] = 1;
+            if (b.last_view[id] != s + 1) {
+                b.last_view[id] = s + 1;
+                b.views[id] += b.views[id] < UINT8_MAX;
+            }
             if (!pvs_mask[id]) {
                 fn++;
                 fn_rel += !b.unreliable[id];
@@ -306,7 +330,7 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
         if (isfinite(psnr)) /* back to the mean squared error the PSNR came from */
             sum_sq += 255.0 * 255.0 / pow(10.0, psnr / 10.0);
     }
-    set_metrics(scene, pvs_mask, gt, b.unreliable, out);
+    set_metrics(scene, pvs_mask, gt, &b, n, out);
     out->samples = n;
     out->fng_pixels_mean = fn_sum / n;
     out->fng_reliable_pixels_mean = fn_rel_sum / n;

@@ -52,6 +52,12 @@ typedef struct pvs_eval_result {
     /* the same without unreliable triangles (FP*, FN*): see pvs_unreliable_mask */
     uint32_t gt_tris_reliable;
     double fp_rate_reliable, fn_rate_reliable;
+    /* How complete the sampled GT is: triangles seen in exactly one and
+     * exactly two sample views, the Chao2 estimate of how many triangles the
+     * views would find without limit (pvs_gt_richness_estimate) and
+     * gt_tris / that estimate. */
+    uint32_t gt_once, gt_twice;
+    double gt_est_tris, gt_completeness;
     double fng_pixels_mean, fng_pixels_max; /* FN pixels per sample view */
     double fng_fraction_mean;     /* FNG / pixels per view */
     double fng_reliable_pixels_mean; /* FNG*: FN pixels of reliable triangles only */
@@ -63,6 +69,15 @@ typedef struct pvs_eval_result {
     double full_render_ms;        /* median full-scene draw of one sample view */
     double pvs_render_ms;         /* median PVS-subset draw of one sample view */
 } pvs_eval_result;
+
+/* Bias-corrected Chao2 estimate of the number of distinct triangles that
+ * sample views of the viewcell see, from incidence counts: `observed` seen in
+ * `views` views, `once` of them in exactly one view, `twice` in exactly two:
+ * observed + (views - 1) / views * once * (once - 1) / (2 * (twice + 1)).
+ * Sub-pixel triangles are each seen by few views, so the sampled GT misses
+ * some; this says about how many (a lower bound when detection chances vary
+ * widely, as they do). Requires once + twice <= observed; views >= 1. */
+double pvs_gt_richness_estimate(uint32_t observed, uint32_t once, uint32_t twice, uint32_t views);
 
 /* Marks the triangles that the paper calls unreliable for the eye at the
  * viewcell centre: projected into a `width` x `height` image with the PVS
