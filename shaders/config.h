@@ -54,10 +54,15 @@
 /* Most workgroups of P3's cooperative pass (Vulkan's minimum of
  * maxComputeWorkGroupCount[0]); each loops over the deferred pixels. */
 #define TV_PVS_MAX_COOP_GROUPS 65535u
-/* The wide visibility pass dilates triangles by half a pixel, clamped to
- * this many pixels at sharp corners (pvs_face.vert); pvs_face.frag bounds
- * the dilated plane's depth error with it. */
-#define TV_PVS_MAX_DILATION_PX 3.0
+/* The wide visibility pass dilates triangles by half a pixel (pvs_face.vert).
+ * A sharp corner needs an offset of about 0.7 / sin(angle / 2) pixels to keep
+ * the whole triangle covered; this bound only guards the arithmetic (it keeps
+ * corners down to 0.02 degrees). */
+#define TV_PVS_MAX_DILATION_PX 4096.0
+/* pvs_face.frag's depth tie: two faces within this many times the depth
+ * slope per pixel (|dw/dx| + |dw/dy|) of each other count as tied (it was the
+ * old 3-pixel dilation limit, the dilated plane's depth error). */
+#define TV_PVS_TIE_SLOPES 3.0
 
 /* Trim-region stencil values (one per pixel, initialised UNTRIMMED). */
 #define TV_STENCIL_UNTRIMMED 0u

@@ -43,6 +43,24 @@ bool covers_centre()
     return true;
 }
 
+// Whether the pixel's square meets the undilated triangle (separating axes:
+// the square's two, then each edge's normal): the dilated triangle covers
+// more than that near its moved corners.
+bool touches_pixel()
+{
+    vec2 s[3] = vec2[3](v_s01.xy, v_s01.zw, v_s2.xy);
+    vec2 c = gl_FragCoord.xy;
+    vec2 lo = min(min(s[0], s[1]), s[2]), hi = max(max(s[0], s[1]), s[2]);
+    if (any(lessThan(c + 0.5, lo)) || any(greaterThan(c - 0.5, hi)))
+        return false;
+    for (uint i = 0u; i < 3u; i++) {
+        vec2 e = s[(i + 1u) % 3u] - s[i], d = c - s[i];
+        if (v_s2.z * (e.x * d.y - e.y * d.x) + 0.5 * (abs(e.x) + abs(e.y)) < 0.0)
+            return false;
+    }
+    return true;
+}
+
 // The spill draws after P3 (exact and dilated; P3 requests them, see
 // request_spill) at pixels whose front list overflowed in this layer. They
 // cannot tell a lost fragment from a stored one, so they output what P3 may
@@ -73,6 +91,8 @@ void main()
     float w = pvs_depth(), slope = 0.0;
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u)
         slope = abs(dFdx(w)) + abs(dFdy(w));
+    if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && v_s2.z != 0.0 && !touches_pixel())
+        discard;
     vec4 base = tv_material_color(v_material, v_uv);
     if (tv_alpha_masked(v_material, base.a))
         discard;
@@ -95,7 +115,7 @@ void main()
             // Tied in depth with the nearest face at this centre (coplanar
             // faces): the depth test kept one, but an eye's raster may show
             // either (z-fighting), so both are visible from v*.
-            if (w <= nearest + slope * TV_PVS_MAX_DILATION_PX)
+            if (w <= nearest + slope * TV_PVS_TIE_SLOPES)
                 tri_flags[v_triangle] = 1u;
             return;
         }
@@ -105,7 +125,7 @@ void main()
         // sub-pixel triangle of the same finely tessellated surface, or of a
         // surface just behind it: an eye's pixel centre may land on it).
         float inside = max(v_near, w - 0.5 * slope); // its nearest depth in the pixel
-        if (v_far < nearest || inside <= nearest + slope * TV_PVS_MAX_DILATION_PX)
+        if (v_far < nearest || inside <= nearest + slope * TV_PVS_TIE_SLOPES)
             tri_flags[v_triangle] = 1u;
         if (kind != TV_PVS_KIND_FRONT)
             return;

@@ -22,9 +22,12 @@ layout(location = 4) flat out vec3 v_s2;  // corner 2, orientation (0: not dilat
 layout(location = 5) flat out float v_far; // farthest corner's depth (clip w)
 layout(location = 6) flat out float v_near; // nearest corner's depth (clip w)
 
-// Dilation is clamped at sharp corners (a full-pixel dilation needs an
-// unbounded offset there) to TV_PVS_MAX_DILATION_PX; those corners stay
-// slightly under-covered.
+// Every corner moves so far that both of its edges move out by the pixel's
+// half extent: a needle's sharp corner moves tens or hundreds of pixels. An
+// earlier clamp to 3 pixels let thin slivers lose their whole dilation (and
+// all their fragments): the edges meeting at a clamped corner barely move.
+// The fragment shader discards what the enlarged triangle covers beyond the
+// pixels the triangle touches (touches_pixel), so coverage is exact.
 
 vec2 screen(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * vec2(view.width, view.height); }
 

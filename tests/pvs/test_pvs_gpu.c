@@ -617,6 +617,40 @@ static void test_fine_tessellation(void)
     check_configuration(&f, "a bumpy wall of sub-pixel triangles", 0.1f, FN_SIMPLE, NULL, 0, NULL, 0);
 }
 
+/* Needles: 40 thin rhombi 60 cm long and 5 mm wide, 12 m away in front of
+ * a wall (13 x 0.1 PVS pixels), vertical and tilted, at phases across the
+ * pixel grid, so most cover no pixel centre of v*. Each half is a sliver
+ * whose corners are almost collinear: two sharp corners and one near 180
+ * degrees. Nothing occludes them, so each touches pixels of v*'s image and
+ * is visible: all 80 triangles belong in the PVS. Until 2026-11-24 the
+ * dilated pass clamped corner offsets to 3 pixels, which leaves the edges at
+ * two sharp corners almost undilated: such slivers produced no fragment at
+ * all (Sponza's decimated mesh has many; they were most of its
+ * false-negative pixels). */
+static void test_needles(void)
+{
+    enum { N = 40 };
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    uint32_t first = f.scene.triangle_count;
+    for (int i = 0; i < N; i++) {
+        float x = -1.0f + 0.0493f * (float)i, y = -0.3f, tilt = (float)(i % 3 - 1) * 0.25f, h = 0.0025f;
+        const float q[4][3] = {{x, y, -12.0f}, {x + 0.5f * tilt + h, y + 0.3f, -12.0f},
+                               {x + tilt, y + 0.6f, -12.0f}, {x + 0.5f * tilt - h, y + 0.3f, -12.0f}};
+        fx_quad(&f.scene, q, m);
+    }
+    fx_quad_z(&f.scene, -6.0f, -4.0f, 6.0f, 4.0f, -14.0f, m);
+    scn_scene_update_bounds(&f.scene);
+    fixture_open(&f, 0);
+    pvs_result r;
+    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.05f);
+    TV_CHECK(compute(&f, &vc, &r));
+    uint32_t in = count_in_range(&r, first, 2 * N);
+    printf("  needles in the PVS: %u of %d\n", in, 2 * N);
+    TV_CHECK(in == 2 * N);
+    fixture_close(&f);
+}
+
 /* ---- k = 1: overflow is counted and loses nothing ---- */
 
 static void test_tiny_k_overflow(void)
@@ -746,6 +780,7 @@ int main(void)
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_fine_tessellation);
+    TV_TEST_RUN(test_needles);
     TV_TEST_RUN(test_tiny_k_overflow);
     TV_TEST_RUN(test_hybrid_sort);
     TV_TEST_RUN(test_city_no_false_negatives);
