@@ -22,14 +22,75 @@ layout(location = 4) flat out vec3 v_s2;  // corner 2, orientation (0: not dilat
 layout(location = 5) flat out float v_far; // farthest corner's depth (clip w)
 layout(location = 6) flat out float v_near; // nearest corner's depth (clip w)
 
-// Every corner moves so far that both of its edges move out by the pixel's
-// half extent: a needle's sharp corner moves tens or hundreds of pixels. An
-// earlier clamp to 3 pixels let thin slivers lose their whole dilation (and
-// all their fragments): the edges meeting at a clamped corner barely move.
-// The fragment shader discards what the enlarged triangle covers beyond the
-// pixels the triangle touches (touches_pixel), so coverage is exact.
+// Two enlargements, each containing every pixel the triangle touches (its
+// Minkowski sum with the pixel square); the first is drawn unless the
+// second has under a quarter of its area:
+// - each corner moves until both of its edges have moved out by the pixel's
+//   half extent along their normals (fine for fat triangles; a sharp corner
+//   moves 0.7 / sin(angle / 2) pixels, so a sliver grows by the square of
+//   that). An earlier clamp of that offset to 3 pixels left slivers whose
+//   corners are almost collinear without a single fragment;
+// - the smallest triangle around the triangle's bounding rectangle along its
+//   longest edge, grown by the pixel's extent (twice that rectangle's area:
+//   about 3 pixels per pixel of a sliver's length). Its corners take the
+//   depth and uv of the triangle's plane there (1/w, z/w and uv/w are affine
+//   in screen space), the depth clamped to the triangle's own range; it is
+//   used only where that plane lies in front of v* at all three. Drawn for
+//   every triangle smaller than the first, it cost the interior's running
+//   replay a few false-negative pixels (depths across a wide triangle whose
+//   corners were clamped are not the plane's); the quarter keeps it to the
+//   slivers, where it saves most fragments.
+// The fragment shader discards what either covers beyond the pixels the
+// triangle touches (touches_pixel), so coverage is exact.
 
 vec2 screen(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * vec2(view.width, view.height); }
+
+float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// Corner i moved out by the pixel's half extent along both of its edges.
+vec2 moved_corner(vec2 s[3], float orient, uint i)
+{
+    vec2 prev = s[i] - s[(i + 2u) % 3u], next = s[(i + 1u) % 3u] - s[i];
+    vec2 np = normalize(orient * vec2(prev.y, -prev.x)), nn = normalize(orient * vec2(next.y, -next.x));
+    float hp = 0.5 * (abs(np.x) + abs(np.y)), hn = 0.5 * (abs(nn.x) + abs(nn.y));
+    float det = np.x * nn.y - np.y * nn.x;
+    vec2 d = abs(det) > 1e-4 ? vec2(hp * nn.y - hn * np.y, np.x * hn - nn.x * hp) / det : np * hp;
+    if (length(d) > TV_PVS_MAX_DILATION_PX)
+        d = normalize(d) * TV_PVS_MAX_DILATION_PX;
+    return s[i] + d;
+}
+
+// The triangle around the grown bounding rectangle; returns its area.
+float rectangle_triangle(vec2 s[3], out vec2 t[3])
+{
+    uint e = 0u;
+    for (uint i = 1u; i < 3u; i++)
+        if (length(s[(i + 1u) % 3u] - s[i]) > length(s[(e + 1u) % 3u] - s[e]))
+            e = i;
+    vec2 a = s[e], u = normalize(s[(e + 1u) % 3u] - a), n = vec2(-u.y, u.x);
+    float len = length(s[(e + 1u) % 3u] - a), h = dot(s[(e + 2u) % 3u] - a, n);
+    if (h < 0.0) {
+        n = -n;
+        h = -h;
+    }
+    // the opposite corner projects inside the longest edge: the rectangle
+    // [0, len] x [0, h] holds the triangle; grow it by the square's support
+    float mu = 0.5 * (abs(u.x) + abs(u.y)), mn = 0.5 * (abs(n.x) + abs(n.y));
+    float w = len + 2.0 * mu, ht = h + 2.0 * mn;
+    vec2 base = a - mn * n;
+    t[0] = base + (-mu - 0.5 * w) * u;
+    t[1] = base + (len + mu + 0.5 * w) * u;
+    t[2] = base + 0.5 * len * u + 2.0 * ht * n;
+    return 2.0 * w * ht;
+}
+
+// Barycentric weights of screen point p (affine: any p, inside or not).
+vec3 bary(vec2 s[3], vec2 p)
+{
+    float area = cross2(s[1] - s[0], s[2] - s[0]);
+    float b1 = cross2(p - s[0], s[2] - s[0]) / area, b2 = cross2(s[1] - s[0], p - s[0]) / area;
+    return vec3(1.0 - b1 - b2, b1, b2);
+}
 
 void main()
 {
@@ -44,6 +105,8 @@ void main()
     v_near = min(min(c[0].w, c[1].w), c[2].w);
     v_s01 = vec4(0.0);
     v_s2 = vec3(0.0);
+    vec2 v_uv_override = vec2(0.0);
+    bool overridden = false;
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && c[0].w > 0.0 && c[1].w > 0.0 && c[2].w > 0.0) {
         vec2 s[3] = vec2[3](screen(c[0]), screen(c[1]), screen(c[2]));
         vec2 a = s[1] - s[0], b = s[2] - s[0];
@@ -51,21 +114,34 @@ void main()
         if (orient != 0.0) {
             v_s01 = vec4(s[0], s[1]);
             v_s2 = vec3(s[2], orient);
-            // outward normals of the two edges meeting at this corner
-            vec2 prev = s[corner] - s[(corner + 2u) % 3u], next = s[(corner + 1u) % 3u] - s[corner];
-            vec2 np = normalize(orient * vec2(prev.y, -prev.x)), nn = normalize(orient * vec2(next.y, -next.x));
-            // move each edge out by the pixel's half extent along its normal
-            float hp = 0.5 * (abs(np.x) + abs(np.y)), hn = 0.5 * (abs(nn.x) + abs(nn.y));
-            float det = np.x * nn.y - np.y * nn.x;
-            vec2 d = abs(det) > 1e-4 ? vec2(hp * nn.y - hn * np.y, np.x * hn - nn.x * hp) / det : np * hp;
-            if (length(d) > TV_PVS_MAX_DILATION_PX)
-                d = normalize(d) * TV_PVS_MAX_DILATION_PX;
-            pos.xy += d * 2.0 / vec2(view.width, view.height) * pos.w;
+            vec2 m[3] = vec2[3](moved_corner(s, orient, 0u), moved_corner(s, orient, 1u), moved_corner(s, orient, 2u));
+            vec2 t[3];
+            float rect = rectangle_triangle(s, t);
+            vec3 inv_w = 1.0 / vec3(c[0].w, c[1].w, c[2].w);
+            bool ahead = dot(bary(s, t[0]), inv_w) > 0.0 && dot(bary(s, t[1]), inv_w) > 0.0 &&
+                         dot(bary(s, t[2]), inv_w) > 0.0;
+            if (ahead && rect < 0.125 * abs(cross2(m[1] - m[0], m[2] - m[0]))) {
+                // the plane's depth and uv at the corner, the depth kept
+                // within the triangle's own range like the moved corners'
+                // (a grazing plane extrapolated past the triangle comes
+                // close to v*, where it would hide what it does not)
+                vec3 b = bary(s, t[corner]) * inv_w;
+                float w = 1.0 / (b.x + b.y + b.z);
+                vec2 uv = w * (b.x * tv_vertex_uv(tv_vertex_index(tri, 0u)) + b.y * tv_vertex_uv(tv_vertex_index(tri, 1u)) +
+                               b.z * tv_vertex_uv(tv_vertex_index(tri, 2u)));
+                vec3 z = vec3(c[0].z, c[1].z, c[2].z) * inv_w;
+                float ndc_z = clamp(w * dot(b, vec3(c[0].z, c[1].z, c[2].z)), min(min(z.x, z.y), z.z), max(max(z.x, z.y), z.z));
+                w = clamp(w, v_near, v_far);
+                pos = vec4((t[corner] / vec2(view.width, view.height) * 2.0 - 1.0) * w, ndc_z * w, w);
+                v_uv_override = uv;
+                overridden = true;
+            } else {
+                pos.xy += (m[corner] - s[corner]) * 2.0 / vec2(view.width, view.height) * pos.w;
+            }
         }
     }
     gl_Position = pos;
-    uint v = tv_vertex_index(tri, corner);
-    v_uv = tv_vertex_uv(v);
+    v_uv = overridden ? v_uv_override : tv_vertex_uv(tv_vertex_index(tri, corner));
     v_triangle = tri;
     v_material = tv_tri_material[tri];
 }
