@@ -2,7 +2,15 @@
 // P4: every id of the visibility buffer (the nearest front of each pixel
 // from v*, trimmed pixels included: it is visible from v*, a point of the
 // viewcell) and of the wide (dilated) visibility buffer joins the trimmed
-// primitives already flagged by P2/P3.
+// primitives already flagged by P2/P3. So does the front that ends what a
+// trimmed pixel still carries after its last layer: P3 carries a run whose
+// first front has no back yet to the next layer that reaches the pixel, and
+// where none does the run never closes. Its first front outside the carried
+// hidden range is then the pixel's terminator, as pvs_resolve_pixel's walk
+// makes a front whose interval does not validate; candidates before it are
+// output too, as the walk outputs them. (Until 2026-11-24 such runs were
+// dropped: an open surface seen through a trimmed pixel, oasago2's far
+// floors past a ledge.)
 #extension GL_GOOGLE_include_directive : require
 #include "pvs_common.glsl"
 
@@ -22,4 +30,17 @@ void main()
     id = imageLoad(vis_wide, ivec2(xy)).x;
     if (id != TV_NO_TRIANGLE)
         tri_flags[id] = 1u;
+    uint p = xy.y * view.width + xy.x;
+    uvec4 st = pixstate[p];
+    float hide_begin = uintBitsToFloat(st.z), hide_end = uintBitsToFloat(st.w);
+    for (uint c = 0u; c < st.y; c++) {
+        uvec4 e = carry_buf[p * TV_K_CARRY + c];
+        float depth = uintBitsToFloat(e.x);
+        if (e.y != TV_ENTRY_FRONT || (hide_begin < hide_end && depth >= hide_begin && depth < hide_end))
+            continue;
+        if (e.z != TV_ID_PRIOR)
+            tri_flags[e.z & ~TV_ID_CANDIDATE] = 1u;
+        if ((e.z & TV_ID_CANDIDATE) == 0u)
+            break;
+    }
 }
