@@ -125,15 +125,16 @@ static void md_tables(FILE* f, const tv_bench_row* rows, int first, int end)
             rows[first].cells);
     fprintf(f, "| method | Δ cm | PVS %% | GT %% | PVS/GT | GT compl. | PVS/GT est | FP | FN | FP* | FN* | FNG px | "
                "FNG %% | PSNR dB | PSNR min | PVS ms | GT ms | full ms | PVS/full | PVS/GT ms |\n");
-    fprintf(f, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    fprintf(f, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:"
+               "|---:|\n");
     bool any_tr = false;
     for (int i = first; i < end; i++) {
         const tv_bench_row* r = &rows[i];
         const pvs_eval_result* m = &r->mean.m;
         any_tr = any_tr || r->method == PVS_METHOD_TR;
         fprintf(f,
-                "| %s | %.0f | %.2f | %.2f | %.2f | %.2f | %.2f | %.3f | %.4f | %.3f | %.4f | %.1f | %.4f | %.1f | %.1f | "
-                "%.0f | %.0f | %.1f | %.1f | %.2f |\n",
+                "| %s | %.0f | %.2f | %.2f | %.2f | %.2f | %.2f | %.3f | %.4f | %.3f | %.4f | %.1f | %.4f | %.1f | "
+                "%.1f | %.0f | %.0f | %.1f | %.1f | %.2f |\n",
                 pvs_method_name(r->method), 100.0 * r->delta, 100.0 * m->pvs_fraction, 100.0 * m->gt_fraction,
                 ratio(m->pvs_fraction, m->gt_fraction), m->gt_completeness, ratio(m->pvs_tris, m->gt_est_tris),
                 m->fp_rate, m->fn_rate, m->fp_rate_reliable,

@@ -181,7 +181,7 @@ double pvs_gt_richness_estimate(uint32_t observed, uint32_t once, uint32_t twice
 {
     assert(views >= 1 && (uint64_t)once + twice <= observed);
     double q1 = once, q2 = twice;
-    return observed + (views - 1.0) / views * q1 * (q1 > 0.0 ? q1 - 1.0 : 0.0) / (2.0 * (q2 + 1.0));
+    return observed + (views - 1.0) / views * q1 * (q1 - 1.0) / (2.0 * (q2 + 1.0));
 }
 
 typedef struct eval_buffers {
@@ -272,7 +272,8 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
     uint8_t* gt = gt_mask ? gt_mask : calloc(scene->triangle_count ? scene->triangle_count : 1, 1);
     rnd_target* target = NULL;
     bool ok = false;
-    if (!b.ids || !b.last_view || !b.views || !b.full_rgba || !b.pvs_rgba || !b.unreliable || !b.cams || !b.full_ms || !b.pvs_ms || !gt) {
+    if (!b.ids || !b.last_view || !b.views || !b.full_rgba || !b.pvs_rgba || !b.unreliable || !b.cams ||
+        !b.full_ms || !b.pvs_ms || !gt) {
         snprintf(err, err_size, "ground truth: out of memory");
         goto done;
     }

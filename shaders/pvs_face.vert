@@ -105,8 +105,7 @@ void main()
     v_near = min(min(c[0].w, c[1].w), c[2].w);
     v_s01 = vec4(0.0);
     v_s2 = vec3(0.0);
-    vec2 v_uv_override = vec2(0.0);
-    bool overridden = false;
+    v_uv = tv_vertex_uv(tv_vertex_index(tri, corner));
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && c[0].w > 0.0 && c[1].w > 0.0 && c[2].w > 0.0) {
         vec2 s[3] = vec2[3](screen(c[0]), screen(c[1]), screen(c[2]));
         vec2 a = s[1] - s[0], b = s[2] - s[0];
@@ -127,21 +126,20 @@ void main()
                 // close to v*, where it would hide what it does not)
                 vec3 b = bary(s, t[corner]) * inv_w;
                 float w = 1.0 / (b.x + b.y + b.z);
-                vec2 uv = w * (b.x * tv_vertex_uv(tv_vertex_index(tri, 0u)) + b.y * tv_vertex_uv(tv_vertex_index(tri, 1u)) +
-                               b.z * tv_vertex_uv(tv_vertex_index(tri, 2u)));
+                v_uv = w * (b.x * tv_vertex_uv(tv_vertex_index(tri, 0u)) +
+                            b.y * tv_vertex_uv(tv_vertex_index(tri, 1u)) +
+                            b.z * tv_vertex_uv(tv_vertex_index(tri, 2u)));
                 vec3 z = vec3(c[0].z, c[1].z, c[2].z) * inv_w;
-                float ndc_z = clamp(w * dot(b, vec3(c[0].z, c[1].z, c[2].z)), min(min(z.x, z.y), z.z), max(max(z.x, z.y), z.z));
+                float ndc_z = clamp(w * dot(b, vec3(c[0].z, c[1].z, c[2].z)), min(min(z.x, z.y), z.z),
+                                    max(max(z.x, z.y), z.z));
                 w = clamp(w, v_near, v_far);
                 pos = vec4((t[corner] / vec2(view.width, view.height) * 2.0 - 1.0) * w, ndc_z * w, w);
-                v_uv_override = uv;
-                overridden = true;
             } else {
                 pos.xy += (m[corner] - s[corner]) * 2.0 / vec2(view.width, view.height) * pos.w;
             }
         }
     }
     gl_Position = pos;
-    v_uv = overridden ? v_uv_override : tv_vertex_uv(tv_vertex_index(tri, corner));
     v_triangle = tri;
     v_material = tv_tri_material[tri];
 }
