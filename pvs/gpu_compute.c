@@ -164,7 +164,7 @@ static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
     for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_UMBRA; d += 4)
         c[d + 1] = 1; /* instanceCount */
     c[TV_PVS_C_DRAW_SPILL + 1] = c[TV_PVS_C_DRAW_SPILL_WIDE + 1] = 1;
-    c[TV_PVS_C_DRAW_TRIM + 1] = 2; /* midpoint and nearer trim depths (pvs_quad.vert) */
+    c[TV_PVS_C_DRAW_TRIM + 1] = 3; /* midpoint, nearer and farther trim depths (pvs_quad.vert) */
     c[TV_PVS_C_DISPATCH + 1] = c[TV_PVS_C_DISPATCH + 2] = 1;
     c[TV_PVS_C_DISPATCH_COOP + 1] = c[TV_PVS_C_DISPATCH_COOP + 2] = 1;
     vkCmdUpdateBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, 0, sizeof c, c);

@@ -63,6 +63,11 @@
  * slope per pixel (|dw/dx| + |dw/dy|) of each other count as tied (it was the
  * old 3-pixel dilation limit, the dilated plane's depth error). */
 #define TV_PVS_TIE_SLOPES 3.0
+/* The trim quads drawn in a face's plane move this fraction of their depth
+ * towards the solid (pvs_quad.vert): far above the rounding of interpolated
+ * depths (about 1e-7), far below the thickness of thin walls (1 cm at 100 m
+ * is 1e-4). */
+#define TV_PVS_TRIM_NUDGE 1e-5
 
 /* Trim-region stencil values (one per pixel, initialised UNTRIMMED). */
 #define TV_STENCIL_UNTRIMMED 0u

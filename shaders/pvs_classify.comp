@@ -44,8 +44,8 @@ void emit_silhouette(vec3 e0, vec3 e1, vec3 inside, uint other)
         nb = cross(corner_position(other, 1u) - pb, corner_position(other, 2u) - pb);
     }
     vec3 c[6];
-    vec2 near;
-    if (!pvs_trim_quad(e0, e1, inside, has_back, nb, pb, c, near))
+    vec2 near, far;
+    if (!pvs_trim_quad(e0, e1, inside, has_back, nb, pb, c, near, far))
         return;
     uint slot = atomicAdd(counters[TV_PVS_C_DRAW_TRIM], 6u) / 6u;
     atomicAdd(counters[TV_PVS_C_DRAW_UMBRA], 6u);
@@ -53,7 +53,7 @@ void emit_silhouette(vec3 e0, vec3 e1, vec3 inside, uint other)
     uint base = slot * TV_PVS_SIL_VEC4;
     sil[base] = vec4(c[0], uintBitsToFloat(region));
     for (uint i = 1u; i < TV_PVS_SIL_VEC4; i++)
-        sil[base + i] = vec4(c[i], i == 2u ? near.x : i == 3u ? near.y : 0.0);
+        sil[base + i] = vec4(c[i], i == 2u ? near.x : i == 3u ? near.y : i == 4u ? far.x : far.y);
 }
 
 void main()

@@ -33,7 +33,9 @@
 #define TV_PVS_BINDINGS        23
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
-// behind e1, trim corner behind e0, umbra far corner behind e1, behind e0.
+// behind e1, trim corner behind e0 (w: their nearer plane depths), umbra
+// far corner behind e1, behind e0 (w: the trim corners' farther plane
+// depths; pvs_trim_depth).
 #define TV_PVS_SIL_VEC4 6
 
 // Slots of the counters buffer (uints). Four VkDrawIndirectCommand (FF, BF,

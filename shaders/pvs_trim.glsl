@@ -54,29 +54,33 @@ float pvs_plane_depth(vec2 image, vec3 n, vec3 p, float fallback)
 // Depths of a trim corner: the trim fragments must lie in [f, b] of the
 // intervals they validate, and near the edge the solid lies between the
 // planes of its front triangle (nf, pf) and back neighbour (nb, pb). x: the
-// midpoint of the two ray/plane depths (inside a thick or curved solid); y:
-// the nearer of the two (on the front face of a thin one, where the
-// midpoint lies behind the back face), 0 when there is no back neighbour.
-// A border or non-manifold edge has only its own triangle's plane: the trim
-// then ties with the front, and ties sort fronts first
+// midpoint of the two ray/plane depths (inside a thick or curved solid); y
+// and z: the nearer and the farther of the two (a face's plane where that
+// face goes on past the trim's corner: a thin wall's front, where the
+// midpoint lies behind the back face, or a slab's back face where its side
+// is the front triangle seen almost edge-on and both the midpoint and the
+// side's plane lie in front of the slab); y = z = 0 when there is no back
+// neighbour. A border or non-manifold edge has only its own triangle's
+// plane: the trim then ties with the front, and ties sort fronts first
 // (docs/trim-regions.md).
-vec2 pvs_trim_depth(vec2 image, float edge_depth, vec3 nf, vec3 pf, bool has_back, vec3 nb, vec3 pb)
+vec3 pvs_trim_depth(vec2 image, float edge_depth, vec3 nf, vec3 pf, bool has_back, vec3 nb, vec3 pb)
 {
     float f = pvs_plane_depth(image, nf, pf, edge_depth);
     if (!has_back)
-        return vec2(f, 0.0);
+        return vec3(f, 0.0, 0.0);
     float b = pvs_plane_depth(image, nb, pb, edge_depth);
-    return vec2(0.5 * (f + b), min(f, b));
+    return vec3(0.5 * (f + b), min(f, b), max(f, b));
 }
 
 // Writes e0, e1 (clipped to the near plane), the trim corners behind the
-// extruded e1 and e0 (at the midpoint depth; `near` holds their nearer
-// depths, pvs_trim_depth), and the umbra's far corners behind them. `inside` is
+// extruded e1 and e0 (at the midpoint depth; `near` and `far` hold their
+// nearer and farther plane depths, pvs_trim_depth), and the umbra's far
+// corners behind them. `inside` is
 // the third vertex of the occluder-side triangle (its plane: nf through e0);
 // nb, pb the back neighbour's plane when has_back. Returns false when the
 // edge lies behind the near plane, projects to a point, or its occluder
 // side cannot be told (the triangle is seen edge-on).
-bool pvs_trim_quad(vec3 e0, vec3 e1, vec3 inside, bool has_back, vec3 nb, vec3 pb, out vec3 c[6], out vec2 near)
+bool pvs_trim_quad(vec3 e0, vec3 e1, vec3 inside, bool has_back, vec3 nb, vec3 pb, out vec3 c[6], out vec2 near, out vec2 far)
 {
     vec3 nf = cross(e1 - e0, inside - e0), pf = e0;
     float nearc = view.near_dist;
@@ -112,10 +116,11 @@ bool pvs_trim_quad(vec3 e0, vec3 e1, vec3 inside, bool has_back, vec3 nb, vec3 p
     vec2 x1 = i1 - pvs_trim_width(d1, dot(i1, n)) * n;
     c[0] = e0;
     c[1] = e1;
-    vec2 t1 = pvs_trim_depth(x1, d1, nf, pf, has_back, nb, pb), t0 = pvs_trim_depth(x0, d0, nf, pf, has_back, nb, pb);
+    vec3 t1 = pvs_trim_depth(x1, d1, nf, pf, has_back, nb, pb), t0 = pvs_trim_depth(x0, d0, nf, pf, has_back, nb, pb);
     c[2] = pvs_unproject(x1, t1.x);
     c[3] = pvs_unproject(x0, t0.x);
     near = vec2(t1.y, t0.y);
+    far = vec2(t1.z, t0.z);
     c[4] = pvs_unproject(x1, view.far_dist);
     c[5] = pvs_unproject(x0, view.far_dist);
     return true;

@@ -529,6 +529,23 @@ static void test_back_face_past_an_edge(void)
     check_configuration(&f, "back face past an occluder's edge", 0.3f, FN_SIMPLE, NULL, 0, &quad, 1);
 }
 
+/* A 10 cm slab whose right side v* sees almost edge-on, and an open quad
+ * 10 m away just behind its edge from v*, seen past it from eyes 10 cm
+ * aside. The silhouette lies between the side face and the back face, and
+ * the side's plane meets the rays of the trimmed pixels far in front of the
+ * slab, so a trim at the midpoint of the two planes' depths (or at the
+ * nearer) lies in front of the slab and validates nothing: the slab's front
+ * face became the terminator and the quad was lost (14 pixels of a cone
+ * sample). The trim drawn in the back face's plane fixes it. */
+static void test_open_quad_past_a_slab_edge(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -3.0f, -2.0f, -5.1f, -0.05f, 2.0f, -5.0f, m);
+    uint32_t quad = fx_quad_z(&f.scene, -0.35f, -0.5f, -0.12f, 0.5f, -10.0f, m);
+    check_configuration(&f, "open quad past a slab's edge", 0.1f, FN_SIMPLE, NULL, 0, &quad, 1);
+}
+
 /* A 0.2 m square hole near the edge of the 60-degree target view (which
  * ends at x = 1.73 at this depth): the box seen through it must be kept,
  * one behind the solid part culled. The hole's 5 cm side walls are seen
@@ -777,6 +794,7 @@ int main(void)
     TV_TEST_RUN(test_umbra_inside_umbra);
     TV_TEST_RUN(test_occluders_across_layers);
     TV_TEST_RUN(test_back_face_past_an_edge);
+    TV_TEST_RUN(test_open_quad_past_a_slab_edge);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_fine_tessellation);
