@@ -286,16 +286,27 @@ static uint32_t replace_backs(const pvs_pixel_state* s, const seq_entry* seq, ui
 }
 
 /* Front-to-back walk with the running prefix sum; returns true when a
- * terminator sealed the pixel and sets *term to its depth. */
-static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out, uint32_t* n_out, float* term)
+ * terminator sealed the pixel and sets *term to its depth and s's hidden
+ * range to the last one before it (from the back of the interval that
+ * opened it, or the carried range's start, to where the prefix returns to
+ * 0), which pvs_sealed_output reads. */
+static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2, uint32_t m, intervals* iv,
+                 uint32_t* out, uint32_t* n_out, float* term)
 {
     int32_t prefix = 0;
+    float open = 0.0f, span_lo = 0.0f, span_hi = 0.0f;
     for (uint32_t i = 0; i < m; i++) {
         const seq_entry* e = &seq2[i];
         bool is_face = e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK;
         if (e->delta > 0 && e->kind == TV_ENTRY_FRONT)
             iv->hidden[e->interval] = prefix > 0; /* its run starts inside an umbra */
+        if (prefix == 0 && e->delta > 0)
+            open = e->kind == TV_ENTRY_BEGIN ? e->depth : seq[iv->back[e->interval]].depth;
         prefix += e->delta;
+        if (prefix == 0 && e->delta < 0) {
+            span_lo = open;
+            span_hi = e->depth;
+        }
         if (is_candidate(e)) {
             /* It only touches the pixel: visible unless hidden, never an
              * occluder (neither a run nor a terminator). */
@@ -321,6 +332,8 @@ static bool walk(const seq_entry* seq2, uint32_t m, intervals* iv, uint32_t* out
         if (e->kind == TV_ENTRY_FRONT || e->interval < 0)
             emit(out, n_out, e->id);
         *term = e->depth;
+        s->hide_begin = span_lo;
+        s->hide_end = span_hi;
         return true;
     }
     return false;
@@ -395,13 +408,34 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
     return true;
 }
 
+/* A sealed pixel stores nothing more (P2 drops its fragments); a front or
+ * back of a later layer that pvs_sealed_output admits is output at once. */
+static uint32_t resolve_sealed(const pvs_pixel_state* s, const pvs_kbuf* kbuf, uint32_t* out)
+{
+    uint32_t n_out = 0;
+    for (uint32_t i = 0; i < kbuf->front_count && i < TV_K_FRONT; i++)
+        if (pvs_sealed_output(s, kbuf->front_depth[i]))
+            emit(out, &n_out, kbuf->front_tri[i]);
+    for (uint32_t i = 0; i < kbuf->back_count && i < TV_K_BACK; i++)
+        if (pvs_sealed_output(s, kbuf->back_depth[i]))
+            emit(out, &n_out, kbuf->back_tri[i]);
+    return n_out;
+}
+
+bool pvs_sealed_output(const pvs_pixel_state* state, float depth)
+{
+    assert(state && state->stencil == TV_STENCIL_SEALED);
+    bool hidden = state->hide_begin < state->hide_end && state->hide_begin < depth && depth < state->hide_end;
+    return depth < state->term_depth && !hidden;
+}
+
 uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out,
                            bool* overflowed)
 {
     assert(state && kbuf && out && overflowed);
     *overflowed = false;
     if (state->stencil == TV_STENCIL_SEALED)
-        return 0;
+        return resolve_sealed(state, kbuf, out);
     if (state->stencil == TV_STENCIL_UNTRIMMED && kbuf->trim_count == 0)
         return 0;
     *overflowed = state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT ||
@@ -421,14 +455,13 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
     uint32_t m = replace_backs(state, seq, n, &iv, seq2);
     uint32_t n_out = 0;
     float term = INFINITY, lost = has_depth(kbuf->front_lost) ? kbuf->front_lost : INFINITY;
-    bool sealed = walk(seq2, m, &iv, out, &n_out, &term);
+    bool sealed = walk(state, seq, seq2, m, &iv, out, &n_out, &term);
     if (lost < INFINITY && !(sealed && term < lost))
         return resolve_overflow(state, kbuf, out); /* outputs what the walk did, and more */
     if (sealed) {
         state->term_depth = term;
         state->stencil = TV_STENCIL_SEALED;
         state->carry_count = 0;
-        state->hide_begin = state->hide_end = 0.0f;
         return n_out;
     }
     carry_range(state, seq, n, &iv);

@@ -109,8 +109,10 @@ typedef struct pvs_pixel_state {
     uint32_t stencil; /* TV_STENCIL_*; zero-initialised = untrimmed */
     uint32_t carry_count;
     pvs_entry carry[TV_K_CARRY]; /* kinds FRONT, TRIM, UMBRA, in depth order */
-    float hide_begin, hide_end;  /* a carried hidden range when hide_begin < hide_end */
-    float term_depth;            /* the terminator's depth once sealed */
+    /* A hidden range when hide_begin < hide_end: carried to the next layer
+     * while trimmed; once sealed, the last one in front of the terminator. */
+    float hide_begin, hide_end;
+    float term_depth; /* the terminator's depth once sealed */
 } pvs_pixel_state;
 
 /* P2's insertion of one fragment of `kind` (TV_ENTRY_FRONT, BACK, TRIM or
@@ -124,8 +126,10 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id);
  * monotonic in the distance along the pixel's ray from v*). Writes the
  * triangle ids this pixel adds to the trimmed-primitive list into `out`
  * (room for PVS_RESOLVE_MAX_OUTPUT) and returns their count; updates
- * `state`. A sealed pixel outputs nothing; an untrimmed pixel without trim
- * fragments outputs nothing either (its nearest front is the visibility
+ * `state`. A sealed pixel outputs the fronts and backs that
+ * pvs_sealed_output admits (the GPU does this in P2: it stores nothing at
+ * a sealed pixel); an untrimmed pixel without trim fragments outputs
+ * nothing (its nearest front is the visibility
  * buffer's), otherwise the pixel becomes trimmed and is resolved. Sets
  * *overflowed when a list of the pixel overflowed, its carry did not fit or
  * it was already in overflow state (the statistics count these pixels). */
@@ -141,6 +145,16 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
  * visibility buffer holds its nearest face, and P3 ignores its fronts. The
  * GPU's spill draws after P3 decide the same way. */
 bool pvs_spill_output(const pvs_pixel_state* state, uint32_t id, float depth);
+
+/* Whether a front or back face at `depth` reaching a sealed pixel in a later
+ * layer is output: when it lies in front of the terminator and outside the
+ * hidden range kept at sealing. Layers are peeled front to back by octree
+ * leaf, but a triangle is drawn in the layer of its earliest leaf only, so a
+ * large one may terminate a pixel before the layer holding a nearer face
+ * there (found on Sponza: a back face sealed pixels 24 cm behind a ledge
+ * drawn four layers later, which eyes in the viewcell see). Asserts that
+ * the pixel is sealed. */
+bool pvs_sealed_output(const pvs_pixel_state* state, float depth);
 
 #ifdef __cplusplus
 }

@@ -138,8 +138,11 @@ void main()
         w = inside;
         id |= TV_ID_CANDIDATE;
     }
-    if (pvs_sealed(p))
+    if (pvs_sealed(p)) { // a face of a later layer in front of the terminator (pvs_sealed_output)
+        if (pvs_sealed_output(p, w))
+            tri_flags[v_triangle] = 1u;
         return;
+    }
     if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
         // overflow policy: left to the spill draws after P3
         atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);

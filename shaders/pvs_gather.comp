@@ -33,7 +33,7 @@ void main()
     uint p = xy.y * view.width + xy.x;
     uvec4 st = pixstate[p];
     float hide_begin = uintBitsToFloat(st.z), hide_end = uintBitsToFloat(st.w);
-    for (uint c = 0u; c < st.y; c++) {
+    for (uint c = 0u; st.x != TV_STENCIL_SEALED && c < st.y; c++) {
         uvec4 e = carry_buf[p * TV_K_CARRY + c];
         float depth = uintBitsToFloat(e.x);
         if (e.y != TV_ENTRY_FRONT || (hide_begin < hide_end && depth >= hide_begin && depth < hide_end))

@@ -14,6 +14,15 @@ float pvs_depth() { return 1.0 / gl_FragCoord.w; }
 
 bool pvs_sealed(uint p) { return pixstate[p].x == TV_STENCIL_SEALED; }
 
+// pvs_sealed_output of resolve.h: a sealed pixel keeps its terminator's
+// depth in y and the last hidden range in front of it in z, w.
+bool pvs_sealed_output(uint p, float depth)
+{
+    uvec4 st = pixstate[p];
+    float lo = uintBitsToFloat(st.z), hi = uintBitsToFloat(st.w);
+    return depth < uintBitsToFloat(st.y) && !(lo < hi && lo < depth && depth < hi);
+}
+
 void pvs_mark_active(uint p)
 {
     if (atomicExchange(active_flag[p], 1u) != 0u)

@@ -19,7 +19,7 @@
 #define TV_PVS_BIND_KTRIM      9  // k-buffer: uvec2 (depth bits, region) per slot
 #define TV_PVS_BIND_KUMBRA     10 // k-buffer: uvec2 (depth bits, region) per slot
 #define TV_PVS_BIND_PIXCOUNT   11 // uvec4 per pixel: front, back, trim, umbra counters
-#define TV_PVS_BIND_PIXSTATE   12 // uvec4 per pixel: stencil, carry count, hide begin/end bits
+#define TV_PVS_BIND_PIXSTATE   12 // uvec4 per pixel: stencil, carry count (sealed: terminator depth bits), hide begin/end bits
 #define TV_PVS_BIND_CARRY      13 // uvec4 (depth bits, kind, id, 0) x TV_K_CARRY per pixel
 #define TV_PVS_BIND_ACTIVE     14 // uint per pixel: active pixel stencil
 #define TV_PVS_BIND_ACTIVE_LIST 15 // pixel indices activated in this layer

@@ -209,12 +209,19 @@ uint replace_backs(uint n)
 bool walk(uint m)
 {
     int prefix = 0;
+    float open = 0.0, span_lo = 0.0, span_hi = 0.0;
     for (uint i = 0u; i < m; i++) {
         seq_entry e = ent[S2 + i];
         bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
         if (e.delta > 0 && e.kind == TV_ENTRY_FRONT)
             iv_hidden[e.interval] = prefix > 0;
+        if (prefix == 0 && e.delta > 0)
+            open = e.kind == TV_ENTRY_BEGIN ? e.depth : ent[iv_back[e.interval]].depth;
         prefix += e.delta;
+        if (prefix == 0 && e.delta < 0) {
+            span_lo = open;
+            span_hi = e.depth;
+        }
         bool in_valid = e.interval >= 0 && iv_valid[e.interval];
         if (is_candidate(e)) { // touches the pixel only: output unless hidden, never an occluder
             if (prefix == 0 || (in_valid && !iv_hidden[e.interval]))
@@ -236,6 +243,8 @@ bool walk(uint m)
         if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
             output_id(e.id);
         term_depth = e.depth;
+        hide_begin = span_lo;
+        hide_end = span_hi;
         return true;
     }
     return false;
@@ -346,7 +355,6 @@ bool resolve_end(uint n, uint m)
     if (sealed) {
         stencil = TV_STENCIL_SEALED;
         carry_count = 0u;
-        hide_begin = hide_end = 0.0;
         return false;
     }
     carry_range(n);
@@ -387,7 +395,7 @@ void load_pixel(uint pixel)
     cnt = pixcount[P];
     uvec4 st = pixstate[P];
     stencil = st.x;
-    carry_count = st.y;
+    carry_count = stencil == TV_STENCIL_SEALED ? 0u : st.y;
     hide_begin = uintBitsToFloat(st.z);
     hide_end = uintBitsToFloat(st.w);
     for (uint c = 0u; c < carry_count; c++) {
@@ -395,7 +403,7 @@ void load_pixel(uint pixel)
         carry[c] = make_entry(uintBitsToFloat(e.x), e.y, e.z, 0);
     }
     n_out = 0u;
-    term_depth = 0.0;
+    term_depth = stencil == TV_STENCIL_SEALED ? uintBitsToFloat(st.y) : 0.0;
 }
 
 // Writes the pixel's state back, requests spill draws, adds the layer's
@@ -405,7 +413,8 @@ void finish_pixel(uint seq_len, bool handled)
     bool overflowed = handled || any(greaterThan(cnt, uvec4(view.k)));
     if (cnt.x > view.k)
         request_spill();
-    pixstate[P] = uvec4(stencil, carry_count, floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
+    pixstate[P] = uvec4(stencil, stencil == TV_STENCIL_SEALED ? floatBitsToUint(term_depth) : carry_count,
+                        floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
     for (uint c = 0u; c < carry_count; c++)
         carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
     uvec4 stored = min(cnt, uvec4(view.k));

@@ -546,6 +546,25 @@ static void test_open_quad_past_a_slab_edge(void)
     check_configuration(&f, "open quad past a slab's edge", 0.1f, FN_SIMPLE, NULL, 0, &quad, 1);
 }
 
+/* The same slab, and a floor below everything from 6 to 60 m ahead,
+ * single-sided and facing down (seen from behind, so a lone back face
+ * terminates). It is drawn in the layer of its nearest octree leaf, right
+ * after the slab's, and seals the trimmed pixels behind the slab's edge
+ * long before the layer of the quad 10 m away, which lies in front of it
+ * there. Until sealed pixels kept their terminator's depth (and output a
+ * later layer's faces in front of it) the quad was lost: 9 FN pixels at a
+ * cone sample. */
+static void test_late_face_before_terminator(void)
+{
+    fixture f = {.octree_cap = 4};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -3.0f, -2.0f, -5.1f, -0.05f, 2.0f, -5.0f, m);
+    const float floor[4][3] = {{-5.0f, -1.0f, -6.0f}, {-5.0f, -1.0f, -60.0f}, {5.0f, -1.0f, -60.0f}, {5.0f, -1.0f, -6.0f}};
+    fx_quad(&f.scene, floor, m);
+    uint32_t quad = fx_quad_z(&f.scene, -0.35f, -0.9f, -0.12f, -0.3f, -10.0f, m);
+    check_configuration(&f, "a later layer's face in front of a terminator", 0.1f, FN_SIMPLE, NULL, 0, &quad, 1);
+}
+
 /* A 0.2 m square hole near the edge of the 60-degree target view (which
  * ends at x = 1.73 at this depth): the box seen through it must be kept,
  * one behind the solid part culled. The hole's 5 cm side walls are seen
@@ -795,6 +814,7 @@ int main(void)
     TV_TEST_RUN(test_occluders_across_layers);
     TV_TEST_RUN(test_back_face_past_an_edge);
     TV_TEST_RUN(test_open_quad_past_a_slab_edge);
+    TV_TEST_RUN(test_late_face_before_terminator);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_fine_tessellation);

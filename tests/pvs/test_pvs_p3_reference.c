@@ -2,9 +2,10 @@
  * pixel by pixel. White-box: it reaches into the context (gpu_internal.h)
  * to fill the k-buffers and pixel states of a 64x64 PVS with random
  * sequences (depths from a few values, so ties of every kind occur;
- * overflowing lists; carried runs and hidden ranges; prior faces), runs the
- * P3 passes alone, and compares every pixel's output ids, stencil, carry
- * and hidden range with pvs_resolve_pixel. Each pixel outputs ids from its
+ * overflowing lists; carried runs and hidden ranges; prior faces; sealed
+ * pixels), runs the P3 passes alone, and compares every pixel's output ids,
+ * stencil, carry (a sealed pixel's terminator depth) and hidden range with
+ * pvs_resolve_pixel. Each pixel outputs ids from its
  * own range, so a wrong id cannot hide behind another pixel's. Run once with
  * every sequence sorted per thread and once with every sequence of two or
  * more entries sorted by a workgroup (the hybrid sort's two passes). */
@@ -77,6 +78,14 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     kb->nearest_front = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->nearest_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->front_lost = rnd_u(8) == 0 ? rnd_depth() : 0.0f;
+    if (st->stencil == TV_STENCIL_SEALED) {
+        /* P2 stores nothing at a sealed pixel (it outputs the faces
+         * pvs_sealed_output admits itself); P3 must keep its state */
+        kb->front_count = kb->back_count = kb->trim_count = kb->umbra_count = 0;
+        st->term_depth = rnd_depth();
+        st->hide_begin = rnd_u(2) ? rnd_depth() : 0.0f;
+        st->hide_end = st->hide_begin > 0.0f ? st->hide_begin + 0.1f : 0.0f;
+    }
     if (st->stencil != TV_STENCIL_TRIMMED)
         return;
     /* a carried run: a front, then fronts, trims and their umbrae, in depth order */
@@ -148,7 +157,8 @@ static void upload(pvs_context* ctx, const case_data* c)
         }
         uint32_t counts[4] = {kb->front_count, kb->back_count, kb->trim_count, kb->umbra_count};
         memcpy(cnt + 4 * p, counts, sizeof counts);
-        uint32_t state[4] = {st->stencil, st->carry_count, fbits(st->hide_begin), fbits(st->hide_end)};
+        uint32_t state[4] = {st->stencil, st->stencil == TV_STENCIL_SEALED ? fbits(st->term_depth) : st->carry_count,
+                             fbits(st->hide_begin), fbits(st->hide_end)};
         memcpy(ps + 4 * p, state, sizeof state);
         for (uint32_t i = 0; i < st->carry_count; i++) {
             uint32_t e[4] = {fbits(st->carry[i].depth), st->carry[i].kind, st->carry[i].id, 0};
@@ -216,10 +226,13 @@ static uint32_t compare(pvs_context* ctx, case_data* c)
         for (uint32_t i = 0; i < IDS_PER_PIXEL; i++)
             got |= flags[p * IDS_PER_PIXEL + i] ? 1u << i : 0u;
         const pvs_pixel_state* st = &c->state[p];
-        bool same = want == got && ps[4 * p] == st->stencil && ps[4 * p + 1] == st->carry_count;
+        /* a sealed pixel keeps its terminator's depth where the carry count was */
+        bool sealed = st->stencil == TV_STENCIL_SEALED;
+        bool same = want == got && ps[4 * p] == st->stencil &&
+                    ps[4 * p + 1] == (sealed ? fbits(st->term_depth) : st->carry_count);
         if (same && st->hide_begin < st->hide_end)
             same = ps[4 * p + 2] == fbits(st->hide_begin) && ps[4 * p + 3] == fbits(st->hide_end);
-        for (uint32_t i = 0; same && i < st->carry_count; i++) {
+        for (uint32_t i = 0; same && !sealed && i < st->carry_count; i++) {
             const uint32_t* e = carry + 4 * (p * TV_K_CARRY + i);
             same = e[0] == fbits(st->carry[i].depth) && e[1] == st->carry[i].kind && e[2] == st->carry[i].id;
         }

@@ -107,15 +107,21 @@ static void test_candidate_fronts(void)
 }
 
 /* R1: f1 t1 b1 validated (u1 at 3) -> f1 out; f2 inside u1 ignored; b2
- * behind u1 is the terminator; f3 never reached. */
+ * behind u1 is the terminator; f3 never reached. A later layer's faces
+ * (a triangle is drawn in the layer of its earliest octree leaf, so a
+ * nearer one can come after the terminator) are output in front of the
+ * terminator, unless inside the hidden range kept at sealing (from b1 to
+ * u1). */
 static void test_figure9_r1(void)
 {
     pvs_pixel_state s = {0};
     layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), B(4.0f), F(5.0f, 3), B(6.0f));
     CHECK_OUT(r, 1);
-    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
-    layer_result later = RUN(s, F(0.5f, 9), B(0.6f), T(0.55f, 5));
-    CHECK_NONE(later); /* a sealed pixel adds nothing */
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 4.0f);
+    TV_CHECK(s.hide_begin == 1.5f && s.hide_end == 3.0f);
+    layer_result later = RUN(s, F(0.5f, 9), F(2.5f, 10), F(3.5f, 11), F(5.0f, 12), T(0.55f, 5));
+    CHECK_OUT(later, 9, 11);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 4.0f);
 }
 
 /* R2: two validated intervals, the second inside the first's umbra; f3
