@@ -3,6 +3,8 @@
  * and the per-layer buffers (grown on demand by pvs_reserve). */
 #include "gpu_internal.h"
 
+#include "clock.h"
+
 #include "log.h"
 #include "weld.h"
 
@@ -135,6 +137,26 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
     return true;
 }
 
+/* Crack edges become TV_ADJ_CRACK in the GPU's copy of the adjacency. */
+static bool mark_cracks(const scn_scene* scene, uint32_t* adjacency, char* err, size_t err_size)
+{
+    uint8_t* crack = malloc(3 * (size_t)scene->triangle_count);
+    if (!crack) {
+        snprintf(err, err_size, "pvs: out of memory for the cracks of %s", scene->name);
+        return false;
+    }
+    double t0 = tv_now_ms();
+    size_t n = scn_mark_cracks(crack, adjacency, scene->indices, scene->triangle_count, scene->positions,
+                               TV_PVS_CRACK_GAP_M);
+    for (size_t i = 0; i < 3 * (size_t)scene->triangle_count; i++)
+        if (crack[i])
+            adjacency[i] = TV_ADJ_CRACK;
+    tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges run along another across a crack (%.0f ms)", scene->name, n,
+           tv_now_ms() - t0);
+    free(crack);
+    return true;
+}
+
 /* Welded adjacency, uploaded once: P1 finds silhouettes with it. */
 static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err, size_t err_size)
 {
@@ -151,8 +173,9 @@ static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err
         size_t joined = scn_join_tjunctions(adjacency, scene->indices, scene->triangle_count, scene->positions);
         tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges continue flat past a T-junction (not silhouettes)",
                scene->name, joined);
+        ok = mark_cracks(scene, adjacency, err, err_size);
         rnd_staging staging = {0};
-        ok = rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size) &&
+        ok = ok && rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size) &&
              rnd_upload_buffer(ctx->rnd, ctx->stream.cmd, &staging, adjacency,
                                sizeof(uint32_t) * 3 * (VkDeviceSize)scene->triangle_count,
                                ctx->buffers[TV_PVS_BIND_ADJ].buffer, err, err_size) &&

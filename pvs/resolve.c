@@ -203,6 +203,7 @@ typedef struct intervals {
     uint32_t first[IV_MAX], back[IV_MAX]; /* sequence indices */
     bool valid[IV_MAX];
     bool hidden[IV_MAX]; /* set by the walk: the run starts inside an umbra */
+    bool cracked[IV_MAX]; /* validated by a crack edge's region (TV_REGION_CRACK) */
     float end[IV_MAX]; /* depth where the hidden range of a valid interval ends */
     int32_t run;       /* first front of the trailing unfinished run, -1 none */
     bool trims_lost;   /* the trim list overflowed: see validate() */
@@ -242,6 +243,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
     for (uint32_t v = 0; v < iv->count; v++) {
         float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
         iv->valid[v] = iv->trims_lost;
+        iv->cracked[v] = false;
         iv->end[v] = hi;
         if (iv->trims_lost)
             continue;
@@ -253,6 +255,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
                 u = hi;
             iv->end[v] = iv->valid[v] && iv->end[v] < u ? iv->end[v] : u;
             iv->valid[v] = true;
+            iv->cracked[v] |= seq[i].id != TV_ID_PRIOR && (seq[i].id & TV_REGION_CRACK) != 0;
         }
     }
 }
@@ -298,8 +301,12 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
     for (uint32_t i = 0; i < m; i++) {
         const seq_entry* e = &seq2[i];
         bool is_face = e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK;
-        if (e->delta > 0 && e->kind == TV_ENTRY_FRONT)
+        if (e->delta > 0 && e->kind == TV_ENTRY_FRONT) {
             iv->hidden[e->interval] = prefix > 0; /* its run starts inside an umbra */
+            /* a crack in the front surface shows the back from inside */
+            if (prefix == 0 && iv->cracked[e->interval])
+                emit(out, n_out, seq[iv->back[e->interval]].id);
+        }
         if (prefix == 0 && e->delta > 0)
             open = e->kind == TV_ENTRY_BEGIN ? e->depth : seq[iv->back[e->interval]].depth;
         prefix += e->delta;

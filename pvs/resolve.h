@@ -24,7 +24,9 @@
  * visible front or back outside a validated interval is the terminator (a
  * front terminator is output, and so is a lone back: a single-sided surface
  * seen from behind, which the renderer draws) and seals the pixel; a
- * trailing run of fronts without a back is carried, not a terminator.
+ * trailing run of fronts without a back is carried, not a terminator. The
+ * back of an interval validated by a crack edge's region (TV_REGION_CRACK)
+ * is output with its fronts: the eyes see it through the crack.
  *
  * Candidate fronts (front id | TV_ID_CANDIDATE: the triangle touches the
  * pixel without covering its centre) take no part in intervals and never

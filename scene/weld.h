@@ -61,6 +61,19 @@ void scn_build_adjacency(uint32_t* adjacency, const uint32_t* indices, size_t tr
 size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                            const float* positions);
 
+/* Cracks: a mesh simplified or exported per part leaves narrow gaps between
+ * faces that should meet (Sponza's decimated columns: 1 cm at their
+ * corners), through which a renderer shows what lies inside. Sets
+ * crack[3t+e] = 1 for each SCN_EDGE_BORDER edge along which a border edge of
+ * another triangle runs within max_gap (directions within ~8 degrees, both
+ * ends of their overlap within max_gap of the other edge), 0 for every
+ * other edge. `crack` holds 3*triangle_count bytes; the rest as for
+ * scn_join_tjunctions (run that first: a joined edge is no border). Returns
+ * the number marked; 0 with nothing marked if it cannot allocate. Expected
+ * O(L / max_gap) over the border edges' total length L. */
+size_t scn_mark_cracks(uint8_t* crack, const uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                       const float* positions, float max_gap);
+
 #ifdef __cplusplus
 }
 #endif

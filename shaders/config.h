@@ -68,6 +68,10 @@
  * depths (about 1e-7), far below the thickness of thin walls (1 cm at 100 m
  * is 1e-4). */
 #define TV_PVS_TRIM_NUDGE 1e-5
+/* Widest gap (scene units, metres) between two border edges that counts as
+ * a crack (scn_mark_cracks): Sponza's decimated columns gape up to ~1.2 cm
+ * at their corners. */
+#define TV_PVS_CRACK_GAP_M 0.02f
 
 /* Trim-region stencil values (one per pixel, initialised UNTRIMMED). */
 #define TV_STENCIL_UNTRIMMED 0u
@@ -100,5 +104,17 @@
  * output (the visibility buffer already holds them). Triangle ids stay below
  * it. */
 #define TV_ID_PRIOR 0x7FFFFFFFu
+
+/* Flag on a trim-region id: the region of a crack edge (scn_mark_cracks),
+ * a border edge along which another triangle's border edge runs across a
+ * narrow gap. An interval such a region validates has a hole at its front
+ * surface, through which the eyes of the viewcell see its back face: P3
+ * outputs that back (pvs_resolve_pixel). Region ids stay below it;
+ * TV_ID_PRIOR, which has this bit, is never a crack region. */
+#define TV_REGION_CRACK 0x40000000u
+
+/* Adjacency value the GPU copy gives a crack edge (P1): a border edge, like
+ * SCN_EDGE_BORDER and SCN_EDGE_NONMANIFOLD above it. */
+#define TV_ADJ_CRACK 0xFFFFFFFDu
 
 #endif

@@ -34,10 +34,11 @@ uint outcode(vec4 clip)
     return code;
 }
 
-// other: the triangle across the edge, or >= SCN_EDGE_NONMANIFOLD.
+// other: the triangle across the edge, or >= TV_ADJ_CRACK (a border, crack
+// or non-manifold edge).
 void emit_silhouette(vec3 e0, vec3 e1, vec3 inside, uint other)
 {
-    bool has_back = other < 0xFFFFFFFEu;
+    bool has_back = other < TV_ADJ_CRACK;
     vec3 nb = vec3(0.0), pb = vec3(0.0);
     if (has_back) {
         pb = corner_position(other, 0u);
@@ -49,7 +50,7 @@ void emit_silhouette(vec3 e0, vec3 e1, vec3 inside, uint other)
         return;
     uint slot = atomicAdd(counters[TV_PVS_C_DRAW_TRIM], 6u) / 6u;
     atomicAdd(counters[TV_PVS_C_DRAW_UMBRA], 6u);
-    uint region = atomicAdd(counters[TV_PVS_C_REGIONS], 1u);
+    uint region = atomicAdd(counters[TV_PVS_C_REGIONS], 1u) | (other == TV_ADJ_CRACK ? TV_REGION_CRACK : 0u);
     uint base = slot * TV_PVS_SIL_VEC4;
     sil[base] = vec4(c[0], uintBitsToFloat(region));
     for (uint i = 1u; i < TV_PVS_SIL_VEC4; i++)
@@ -79,7 +80,7 @@ void main()
         return;
     for (uint e = 0u; e < 3u; e++) {
         uint other = adjacency[3u * tri + e];
-        bool silhouette = other >= 0xFFFFFFFEu || (front && !front_facing(other));
+        bool silhouette = other >= TV_ADJ_CRACK || (front && !front_facing(other));
         if (silhouette)
             emit_silhouette(p[e], p[(e + 1u) % 3u], p[(e + 2u) % 3u], other);
     }

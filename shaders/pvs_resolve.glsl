@@ -39,6 +39,7 @@ TV_RESOLVE_STORAGE seq_entry ent[TV_RESOLVE_ENTRIES];
 uint iv_count;
 uint iv_first[IV_MAX], iv_back[IV_MAX];
 bool iv_valid[IV_MAX];
+bool iv_cracked[IV_MAX]; // validated by a crack edge's region (TV_REGION_CRACK)
 bool trims_lost; // the trim list overflowed: see validate()
 bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
 float iv_end[IV_MAX];
@@ -167,6 +168,7 @@ void validate(uint n)
     for (uint v = 0u; v < iv_count; v++) {
         float lo = ent[iv_first[v]].depth, hi = ent[iv_back[v]].depth;
         iv_valid[v] = trims_lost;
+        iv_cracked[v] = false;
         iv_end[v] = hi;
         if (trims_lost)
             continue;
@@ -178,6 +180,7 @@ void validate(uint n)
                 u = hi;
             iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
             iv_valid[v] = true;
+            iv_cracked[v] = iv_cracked[v] || (ent[i].id != TV_ID_PRIOR && (ent[i].id & TV_REGION_CRACK) != 0u);
         }
     }
 }
@@ -213,8 +216,11 @@ bool walk(uint m)
     for (uint i = 0u; i < m; i++) {
         seq_entry e = ent[S2 + i];
         bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
-        if (e.delta > 0 && e.kind == TV_ENTRY_FRONT)
+        if (e.delta > 0 && e.kind == TV_ENTRY_FRONT) {
             iv_hidden[e.interval] = prefix > 0;
+            if (prefix == 0 && iv_cracked[e.interval]) // seen through the crack
+                output_id(ent[iv_back[e.interval]].id);
+        }
         if (prefix == 0 && e.delta > 0)
             open = e.kind == TV_ENTRY_BEGIN ? e.depth : ent[iv_back[e.interval]].depth;
         prefix += e.delta;

@@ -565,6 +565,33 @@ static void test_late_face_before_terminator(void)
     check_configuration(&f, "a later layer's face in front of a terminator", 0.1f, FN_SIMPLE, NULL, 0, &quad, 1);
 }
 
+/* A pillar whose front face is two quads with a 1.9 cm vertical slit
+ * between them, 2.5 m away: 0.65 PVS pixels wide and placed between two
+ * PVS pixel centres, so v* sees nothing through it, while eyes of the
+ * viewcell (whose pixels are finer) see the inside of the back face there,
+ * a back face from everywhere in the viewcell. The slit's two edges are
+ * crack edges (scn_mark_cracks), so the intervals their regions validate
+ * output their back faces too. */
+static void test_crack_in_a_pillar(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    const float x0 = -0.7f, x1 = 0.9f, y0 = -1.0f, y1 = 1.0f, z0 = -3.5f, z1 = -2.5f, a = 0.4819f, b = 0.5007f;
+    const float q[7][4][3] = {
+        {{x0, y0, z1}, {a, y0, z1}, {a, y1, z1}, {x0, y1, z1}}, /* +z, left of the slit */
+        {{b, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {b, y1, z1}}, /* +z, right of it */
+        {{x1, y0, z1}, {x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}},
+        {{x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0}},
+        {{x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0}, {x0, y1, z0}},
+        {{x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}},
+        {{x1, y0, z0}, {x0, y0, z0}, {x0, y1, z0}, {x1, y1, z0}}, /* -z, last: the known answer */
+    };
+    uint32_t back = 0;
+    for (int i = 0; i < 7; i++)
+        back = fx_quad(&f.scene, q[i], m);
+    check_configuration(&f, "a crack in a pillar", 0.1f, FN_SIMPLE, NULL, 0, &back, 1);
+}
+
 /* A 0.2 m square hole near the edge of the 60-degree target view (which
  * ends at x = 1.73 at this depth): the box seen through it must be kept,
  * one behind the solid part culled. The hole's 5 cm side walls are seen
@@ -815,6 +842,7 @@ int main(void)
     TV_TEST_RUN(test_back_face_past_an_edge);
     TV_TEST_RUN(test_open_quad_past_a_slab_edge);
     TV_TEST_RUN(test_late_face_before_terminator);
+    TV_TEST_RUN(test_crack_in_a_pillar);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_fine_tessellation);

@@ -37,6 +37,14 @@ static uint32_t rnd_u(uint32_t n)
     return (g_seed >> 8) % n;
 }
 
+/* One of six trim regions; regions 4 and 5 are crack regions, so their
+ * trims and umbrae carry the flag alike. */
+static uint32_t rnd_region(void)
+{
+    uint32_t r = rnd_u(6);
+    return r >= 4 ? r | TV_REGION_CRACK : r;
+}
+
 static float rnd_depth(void)
 {
     return 0.1f * (float)(1 + rnd_u(10)); /* few values: ties */
@@ -71,9 +79,9 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         kb->back_depth[i] = rnd_depth();
         kb->back_tri[i] = base + rnd_u(IDS_PER_PIXEL);
         kb->trim_depth[i] = rnd_depth();
-        kb->trim_region[i] = rnd_u(6);
+        kb->trim_region[i] = rnd_region();
         kb->umbra_depth[i] = rnd_depth() + 0.05f * (float)rnd_u(3);
-        kb->umbra_region[i] = rnd_u(6);
+        kb->umbra_region[i] = rnd_region();
     }
     kb->nearest_front = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->nearest_back = rnd_u(2) ? rnd_depth() : INFINITY;
@@ -94,7 +102,7 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     for (uint32_t i = 0; i < n; i++) {
         uint32_t kind = i == 0 ? TV_ENTRY_FRONT : rnd_u(3) == 0 ? TV_ENTRY_UMBRA : rnd_u(2) ? TV_ENTRY_TRIM
                                                                                           : TV_ENTRY_FRONT;
-        uint32_t id = kind == TV_ENTRY_FRONT ? base + rnd_u(IDS_PER_PIXEL) : rnd_u(6);
+        uint32_t id = kind == TV_ENTRY_FRONT ? base + rnd_u(IDS_PER_PIXEL) : rnd_region();
         st->carry[st->carry_count++] = (pvs_entry){d, kind, id};
         d += 0.1f * (float)rnd_u(2);
     }

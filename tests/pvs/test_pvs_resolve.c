@@ -124,6 +124,26 @@ static void test_figure9_r1(void)
     TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 4.0f);
 }
 
+/* A pillar with a crack in its front surface: the interval validated by
+ * the crack edge's region outputs its back (seen through the crack) with
+ * its front; the same interval validated by an ordinary silhouette's region
+ * does not, and neither does a cracked interval that starts inside an
+ * earlier umbra. */
+static void test_cracked_interval(void)
+{
+    const uint32_t crack = 7u | TV_REGION_CRACK;
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(1.0f, 1), T(1.0f, crack), BI(1.5f, 2), U(3.0f, crack), F(4.0f, 3), B(5.0f));
+    CHECK_OUT(r, 1, 2, 3);
+    pvs_pixel_state plain = {0};
+    r = RUN(plain, F(1.0f, 1), T(1.0f, 7), BI(1.5f, 2), U(3.0f, 7), F(4.0f, 3), B(5.0f));
+    CHECK_OUT(r, 1, 3);
+    pvs_pixel_state inside = {0};
+    r = RUN(inside, F(0.5f, 4), T(0.6f, 8), BI(0.7f, 5), U(6.0f, 8), F(1.0f, 1), T(1.0f, crack), BI(1.5f, 2),
+            U(3.0f, crack), F(7.0f, 3), B(8.0f));
+    CHECK_OUT(r, 4, 3);
+}
+
 /* R2: two validated intervals, the second inside the first's umbra; f3
  * (inside u2, unfinished) carried; in layer i+1 b3 terminates. */
 static void test_figure9_r2(void)
@@ -515,6 +535,7 @@ int main(void)
     TV_TEST_RUN(test_candidate_fronts);
     TV_TEST_RUN(test_figure9_r1);
     TV_TEST_RUN(test_figure9_r2);
+    TV_TEST_RUN(test_cracked_interval);
     TV_TEST_RUN(test_figure9_r3);
     TV_TEST_RUN(test_figure5_umbra_inside_umbra);
     TV_TEST_RUN(test_figure5_disjoint_umbrae);

@@ -214,6 +214,41 @@ static void test_adjacency_grid_scale(void)
     free(pos), free(idx), free(remap), free(adj);
 }
 
+/* Cracks: quad A [0,1]^2 and quad B beside it in the same plane, its left
+ * edge parallel to A's right edge across a gap. 1 cm (under the 2 cm
+ * bound): both edges marked, nothing else; 3 cm: none; coincident edges
+ * that do not weld (B half as tall, no T-junction join run): none, they
+ * leave no opening; B beside A's edge but past its end: none. */
+static size_t crack_count(tj_mesh* m, uint8_t crack[18])
+{
+    uint32_t remap[18];
+    scn_weld_positions(remap, m->pos, 3 * m->tris);
+    scn_build_adjacency(m->adj, m->idx, m->tris, remap);
+    return scn_mark_cracks(crack, m->adj, m->idx, m->tris, m->pos, 0.02f);
+}
+
+static void test_mark_cracks(void)
+{
+    uint8_t crack[18];
+    tj_mesh m = {0};
+    tj_quad(&m, 0, 0, 1, 1, 0, false);
+    tj_quad(&m, 1.01f, 0, 2, 1, 0, false);
+    TV_CHECK(crack_count(&m, crack) == 2);
+    TV_CHECK(crack[1] == 1 && crack[3 * 3 + 2] == 1); /* A's right edge (x = 1), B's left (x = 1.01) */
+    tj_mesh wide = {0};
+    tj_quad(&wide, 0, 0, 1, 1, 0, false);
+    tj_quad(&wide, 1.03f, 0, 2, 1, 0, false);
+    TV_CHECK(crack_count(&wide, crack) == 0);
+    tj_mesh touching = {0};
+    tj_quad(&touching, 0, 0, 1, 1, 0, false);
+    tj_quad(&touching, 1, 0, 2, 0.5f, 0, false);
+    TV_CHECK(crack_count(&touching, crack) == 0);
+    tj_mesh apart = {0};
+    tj_quad(&apart, 0, 0, 1, 1, 0, false);
+    tj_quad(&apart, 1.01f, 1.5f, 2, 2.5f, 0, false);
+    TV_CHECK(crack_count(&apart, crack) == 0);
+}
+
 int main(void)
 {
     TV_TEST_RUN(test_weld_soup);
@@ -223,5 +258,6 @@ int main(void)
     TV_TEST_RUN(test_adjacency_mixed_winding_and_degenerate);
     TV_TEST_RUN(test_adjacency_grid_scale);
     TV_TEST_RUN(test_join_tjunctions);
+    TV_TEST_RUN(test_mark_cracks);
     return tv_test_finish();
 }
