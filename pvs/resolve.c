@@ -203,7 +203,7 @@ typedef struct intervals {
     uint32_t first[IV_MAX], back[IV_MAX]; /* sequence indices */
     bool valid[IV_MAX];
     bool hidden[IV_MAX]; /* set by the walk: the run starts inside an umbra */
-    bool cracked[IV_MAX]; /* validated by a crack edge's region (TV_REGION_CRACK) */
+    bool cracked[IV_MAX]; /* a crack edge's trim lies in it or just in front (TV_REGION_CRACK) */
     float end[IV_MAX]; /* depth where the hidden range of a valid interval ends */
     int32_t run;       /* first front of the trailing unfinished run, -1 none */
     bool trims_lost;   /* the trim list overflowed: see validate() */
@@ -245,17 +245,19 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
         iv->valid[v] = iv->trims_lost;
         iv->cracked[v] = false;
         iv->end[v] = hi;
-        if (iv->trims_lost)
-            continue;
         for (uint32_t i = 0; i < n; i++) {
-            if (seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
+            /* a crack trim lies in its edge's plane, and the face seen
+             * beside the crack may be a neighbour a few mm behind it */
+            bool crack = seq[i].kind == TV_ENTRY_TRIM && seq[i].id != TV_ID_PRIOR && (seq[i].id & TV_REGION_CRACK) != 0;
+            if (crack && seq[i].depth >= lo - TV_PVS_CRACK_SLACK_M && seq[i].depth <= hi)
+                iv->cracked[v] = true;
+            if (iv->trims_lost || seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
                 continue;
             float u = hi;
             if (!umbra_depth(s, k, seq[i].id, &u) || u < hi)
                 u = hi;
             iv->end[v] = iv->valid[v] && iv->end[v] < u ? iv->end[v] : u;
             iv->valid[v] = true;
-            iv->cracked[v] |= seq[i].id != TV_ID_PRIOR && (seq[i].id & TV_REGION_CRACK) != 0;
         }
     }
 }
@@ -338,6 +340,8 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
          * run whose front lies in an umbra is hidden by that front. */
         if (e->kind == TV_ENTRY_FRONT || e->interval < 0)
             emit(out, n_out, e->id);
+        if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->cracked[e->interval])
+            emit(out, n_out, seq[iv->back[e->interval]].id); /* seen through the crack */
         *term = e->depth;
         s->hide_begin = span_lo;
         s->hide_end = span_hi;

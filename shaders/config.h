@@ -72,6 +72,11 @@
  * a crack (scn_mark_cracks): Sponza's decimated columns gape up to ~1.2 cm
  * at their corners. */
 #define TV_PVS_CRACK_GAP_M 0.02f
+/* A crack edge's trim lies in its own triangle's plane; the face seen
+ * beside the crack may be a neighbour a few mm behind that plane (measured
+ * 6 mm on a Sponza column base). An interval whose front lies up to this
+ * depth (view-axis metres) behind such a trim is seen through the crack. */
+#define TV_PVS_CRACK_SLACK_M 0.04f
 
 /* Trim-region stencil values (one per pixel, initialised UNTRIMMED). */
 #define TV_STENCIL_UNTRIMMED 0u

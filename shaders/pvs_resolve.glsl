@@ -39,7 +39,7 @@ TV_RESOLVE_STORAGE seq_entry ent[TV_RESOLVE_ENTRIES];
 uint iv_count;
 uint iv_first[IV_MAX], iv_back[IV_MAX];
 bool iv_valid[IV_MAX];
-bool iv_cracked[IV_MAX]; // validated by a crack edge's region (TV_REGION_CRACK)
+bool iv_cracked[IV_MAX]; // a crack edge's trim lies in it or just in front (TV_REGION_CRACK)
 bool trims_lost; // the trim list overflowed: see validate()
 bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
 float iv_end[IV_MAX];
@@ -170,17 +170,17 @@ void validate(uint n)
         iv_valid[v] = trims_lost;
         iv_cracked[v] = false;
         iv_end[v] = hi;
-        if (trims_lost)
-            continue;
         for (uint i = 0u; i < n; i++) {
-            if (ent[i].kind != TV_ENTRY_TRIM || ent[i].depth < lo || ent[i].depth > hi)
+            bool crack = ent[i].kind == TV_ENTRY_TRIM && ent[i].id != TV_ID_PRIOR && (ent[i].id & TV_REGION_CRACK) != 0u;
+            if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
+                iv_cracked[v] = true;
+            if (trims_lost || ent[i].kind != TV_ENTRY_TRIM || ent[i].depth < lo || ent[i].depth > hi)
                 continue;
             float u = hi;
             if (!umbra_depth(ent[i].id, u) || u < hi)
                 u = hi;
             iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
             iv_valid[v] = true;
-            iv_cracked[v] = iv_cracked[v] || (ent[i].id != TV_ID_PRIOR && (ent[i].id & TV_REGION_CRACK) != 0u);
         }
     }
 }
@@ -248,6 +248,8 @@ bool walk(uint m)
         // run whose front lies in an umbra is hidden by that front.
         if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
             output_id(e.id);
+        if (e.kind == TV_ENTRY_FRONT && e.interval >= 0 && iv_cracked[e.interval])
+            output_id(ent[iv_back[e.interval]].id); // seen through the crack
         term_depth = e.depth;
         hide_begin = span_lo;
         hide_end = span_hi;

@@ -128,7 +128,10 @@ static void test_figure9_r1(void)
  * the crack edge's region outputs its back (seen through the crack) with
  * its front; the same interval validated by an ordinary silhouette's region
  * does not, and neither does a cracked interval that starts inside an
- * earlier umbra. */
+ * earlier umbra. A crack trim up to TV_PVS_CRACK_SLACK_M in front of the
+ * front (in its own face's plane, the visible face a neighbour behind it)
+ * validates nothing, but the terminating front's back is output; one
+ * farther in front does not count. */
 static void test_cracked_interval(void)
 {
     const uint32_t crack = 7u | TV_REGION_CRACK;
@@ -142,6 +145,13 @@ static void test_cracked_interval(void)
     r = RUN(inside, F(0.5f, 4), T(0.6f, 8), BI(0.7f, 5), U(6.0f, 8), F(1.0f, 1), T(1.0f, crack), BI(1.5f, 2),
             U(3.0f, crack), F(7.0f, 3), B(8.0f));
     CHECK_OUT(r, 4, 3);
+    pvs_pixel_state slack = {0};
+    r = RUN(slack, T(1.0f - 0.5f * TV_PVS_CRACK_SLACK_M, crack), F(1.0f, 1), BI(1.5f, 2), F(4.0f, 3), B(5.0f));
+    CHECK_OUT(r, 1, 2);
+    TV_CHECK(slack.stencil == TV_STENCIL_SEALED && slack.term_depth == 1.0f);
+    pvs_pixel_state far = {0};
+    r = RUN(far, T(1.0f - 2.0f * TV_PVS_CRACK_SLACK_M, crack), F(1.0f, 1), BI(1.5f, 2), F(4.0f, 3), B(5.0f));
+    CHECK_OUT(r, 1);
 }
 
 /* R2: two validated intervals, the second inside the first's umbra; f3
