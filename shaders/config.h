@@ -68,6 +68,12 @@
  * depths (about 1e-7), far below the thickness of thin walls (1 cm at 100 m
  * is 1e-4). */
 #define TV_PVS_TRIM_NUDGE 1e-5
+/* The trim drawn at the farther plane depth is drawn only for silhouettes
+ * whose front triangle v* sees within this cosine of edge-on (beyond 60
+ * degrees from its normal): 0.5 kept every FN gain of drawing it always on
+ * Sponza and the city, 0.3 lost 0.1 px and 0.1 lost 6 px on Sponza at 20 cm
+ * (docs/trim-regions.md). */
+#define TV_PVS_GRAZING_COS 0.5
 /* Widest gap (scene units, metres) between two border edges that counts as
  * a crack (scn_mark_cracks): Sponza's decimated columns gape up to ~1.2 cm
  * at their corners. */

@@ -3,8 +3,9 @@
 // (trim: e0 e1 t1 t0, umbra: e0 e1 u1 u0, as two triangles each). Trim
 // quads are drawn three times: instance 0 with t1, t0 at the midpoint depth
 // of the silhouette's two planes, instance 1 at the nearer of them and
-// instance 2 at the farther (kept in the record's w; 0 for an edge without
-// a back neighbour, which draws nothing), so that a thin occluder's front
+// instance 2 at the farther (kept in the record's w; 0 draws nothing: an
+// edge without a back neighbour, or, for instance 2, whose front triangle
+// is not seen grazing), so that a thin occluder's front
 // face, or a slab's back face behind a side seen edge-on, holds a trim too
 // (pvs_trim_depth). Those two are moved TV_PVS_TRIM_NUDGE of their depth
 // towards the other plane, all four corners: a trim in a face's plane
@@ -27,7 +28,7 @@ void main()
     uint entry = corner < 2u ? corner : corner + (pc.kind == TV_PVS_KIND_UMBRA ? 2u : 0u);
     vec3 p = sil[base + entry].xyz;
     if (pc.kind == TV_PVS_KIND_TRIM && gl_InstanceIndex > 0) {
-        if (sil[base + 2u].w == 0.0) {
+        if (sil[base + (gl_InstanceIndex == 2 ? 4u : 2u)].w == 0.0) {
             gl_Position = vec4(0.0, 0.0, 0.0, 1.0); // degenerate: no fragments
             v_region = 0u;
             return;

@@ -74,8 +74,9 @@ vec3 pvs_trim_depth(vec2 image, float edge_depth, vec3 nf, vec3 pf, bool has_bac
 
 // Writes e0, e1 (clipped to the near plane), the trim corners behind the
 // extruded e1 and e0 (at the midpoint depth; `near` and `far` hold their
-// nearer and farther plane depths, pvs_trim_depth), and the umbra's far
-// corners behind them. `inside` is
+// nearer and farther plane depths, pvs_trim_depth; far is 0, no draw,
+// unless the front triangle is seen grazing), and the umbra's far corners
+// behind them. `inside` is
 // the third vertex of the occluder-side triangle (its plane: nf through e0);
 // nb, pb the back neighbour's plane when has_back. Returns false when the
 // edge lies behind the near plane, projects to a point, or its occluder
@@ -120,7 +121,12 @@ bool pvs_trim_quad(vec3 e0, vec3 e1, vec3 inside, bool has_back, vec3 nb, vec3 p
     c[2] = pvs_unproject(x1, t1.x);
     c[3] = pvs_unproject(x0, t0.x);
     near = vec2(t1.y, t0.y);
-    far = vec2(t1.z, t0.z);
+    // The farther plane only where v* sees the front triangle at a grazing
+    // angle (the slab's side), so that its plane misleads: elsewhere that
+    // draw cost the OpenArena levels 10-37 % more PVS for no FN gain.
+    vec3 view_ray = normalize(0.5 * (e0 + e1) - view.apex.xyz);
+    bool grazing = abs(dot(normalize(nf), view_ray)) < TV_PVS_GRAZING_COS;
+    far = grazing ? vec2(t1.z, t0.z) : vec2(0.0);
     c[4] = pvs_unproject(x1, view.far_dist);
     c[5] = pvs_unproject(x0, view.far_dist);
     return true;
