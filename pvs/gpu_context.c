@@ -4,7 +4,6 @@
 #include "gpu_internal.h"
 
 #include "clock.h"
-
 #include "log.h"
 #include "weld.h"
 

@@ -25,8 +25,10 @@
  * front terminator is output, and so is a lone back: a single-sided surface
  * seen from behind, which the renderer draws) and seals the pixel; a
  * trailing run of fronts without a back is carried, not a terminator. The
- * back of an interval validated by a crack edge's region (TV_REGION_CRACK)
- * is output with its fronts: the eyes see it through the crack.
+ * back of an interval that a crack edge's trim (TV_REGION_CRACK) lies in,
+ * or up to TV_PVS_CRACK_SLACK_M in front of, is output with its first
+ * front (validated and unhidden, or the terminator): the eyes see it
+ * through the crack.
  *
  * Candidate fronts (front id | TV_ID_CANDIDATE: the triangle touches the
  * pixel without covering its centre) take no part in intervals and never

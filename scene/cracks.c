@@ -96,6 +96,39 @@ static bool alongside(crack_edge* e, crack_edge* f, float max_gap)
     return g0 <= max_gap && g1 <= max_gap && fmaxf(g0, g1) > CRACK_MIN_GAP * max_gap;
 }
 
+/* Whether a border edge of another triangle runs along edges[i]: the edges
+ * in the cells around its samples, each tested once (tested[] holds the
+ * last edge each was tested against). */
+static bool has_partner(crack_edge* edges, uint32_t i, const crack_cell* cells, size_t m, uint32_t* tested,
+                        float cell, float max_gap)
+{
+    crack_edge* e = &edges[i];
+    uint32_t s = sample_count(e, cell);
+    int32_t prev[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+    for (uint32_t j = 0; j < s; j++) {
+        int32_t c[3];
+        sample_cell(e, j, s, cell, c);
+        if (c[0] == prev[0] && c[1] == prev[1] && c[2] == prev[2])
+            continue;
+        memcpy(prev, c, sizeof prev);
+        for (int k = 0; k < 27; k++) {
+            int32_t q[3] = {c[0] + k % 3 - 1, c[1] + k / 3 % 3 - 1, c[2] + k / 9 - 1};
+            crack_cell probe = {cell_key(q), 0};
+            const crack_cell* hit = bsearch(&probe, cells, m, sizeof *cells, compare_cell);
+            while (hit && hit > cells && hit[-1].key == probe.key)
+                hit--;
+            for (; hit && hit < cells + m && hit->key == probe.key; hit++) {
+                if (tested[hit->edge] == i)
+                    continue;
+                tested[hit->edge] = i;
+                if (edges[hit->edge].tri != e->tri && alongside(e, &edges[hit->edge], max_gap))
+                    return true;
+            }
+        }
+    }
+    return false;
+}
+
 size_t scn_mark_cracks(uint8_t* crack, const uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                        const float* positions, float max_gap)
 {
@@ -149,34 +182,8 @@ size_t scn_mark_cracks(uint8_t* crack, const uint32_t* adjacency, const uint32_t
     memset(tested, 0xFF, sizeof(uint32_t) * n);
     size_t marked = 0;
     for (uint32_t i = 0; i < n; i++) {
-        crack_edge* e = &edges[i];
-        bool found = false;
-        uint32_t s = sample_count(e, cell);
-        int32_t prev[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
-        for (uint32_t j = 0; j < s && !found; j++) {
-            int32_t c[3], q[3];
-            sample_cell(e, j, s, cell, c);
-            if (c[0] == prev[0] && c[1] == prev[1] && c[2] == prev[2])
-                continue;
-            memcpy(prev, c, sizeof prev);
-            for (int k = 0; k < 27 && !found; k++) {
-                q[0] = c[0] + k % 3 - 1, q[1] = c[1] + k / 3 % 3 - 1, q[2] = c[2] + k / 9 - 1;
-                crack_cell probe = {cell_key(q), 0};
-                const crack_cell* hit = bsearch(&probe, cells, m, sizeof *cells, compare_cell);
-                if (!hit)
-                    continue;
-                while (hit > cells && hit[-1].key == probe.key)
-                    hit--;
-                for (; hit < cells + m && hit->key == probe.key && !found; hit++) {
-                    if (tested[hit->edge] == i)
-                        continue;
-                    tested[hit->edge] = i;
-                    found = edges[hit->edge].tri != e->tri && alongside(e, &edges[hit->edge], max_gap);
-                }
-            }
-        }
-        if (found) {
-            crack[3 * e->tri + e->corner] = 1;
+        if (has_partner(edges, i, cells, m, tested, cell, max_gap)) {
+            crack[3 * edges[i].tri + edges[i].corner] = 1;
             marked++;
         }
     }

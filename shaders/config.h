@@ -118,7 +118,8 @@
 
 /* Flag on a trim-region id: the region of a crack edge (scn_mark_cracks),
  * a border edge along which another triangle's border edge runs across a
- * narrow gap. An interval such a region validates has a hole at its front
+ * narrow gap. An interval whose front lies at or up to
+ * TV_PVS_CRACK_SLACK_M behind such a region's trim has a hole at its front
  * surface, through which the eyes of the viewcell see its back face: P3
  * outputs that back (pvs_resolve_pixel). Region ids stay below it;
  * TV_ID_PRIOR, which has this bit, is never a crack region. */
