@@ -103,9 +103,11 @@ static uint32_t min_u32(uint32_t a, uint32_t b)
     return a < b ? a : b;
 }
 
+/* A candidate front, or a candidate back (the back of a triangle narrower
+ * than a pixel: it may cover no pixel centre). */
 static bool is_candidate(const seq_entry* e)
 {
-    return e->kind == TV_ENTRY_FRONT && (e->id & TV_ID_CANDIDATE) != 0;
+    return (e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK) && (e->id & TV_ID_CANDIDATE) != 0;
 }
 
 /* Appends a front's triangle to the output; prior faces are already in the
@@ -218,7 +220,7 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
     for (uint32_t i = 0; i < n; i++) {
         if (seq[i].kind == TV_ENTRY_FRONT && !is_candidate(&seq[i]) && iv->run < 0) {
             iv->run = (int32_t)i;
-        } else if (seq[i].kind == TV_ENTRY_BACK && iv->run >= 0) {
+        } else if (seq[i].kind == TV_ENTRY_BACK && !is_candidate(&seq[i]) && iv->run >= 0) {
             uint32_t k = iv->count++;
             iv->first[k] = (uint32_t)iv->run;
             iv->back[k] = i;
@@ -300,6 +302,7 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
 {
     int32_t prefix = 0;
     float open = 0.0f, span_lo = 0.0f, span_hi = 0.0f;
+    bool face_seen = false; /* a face covering the centre, prior ones included */
     for (uint32_t i = 0; i < m; i++) {
         const seq_entry* e = &seq2[i];
         bool is_face = e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK;
@@ -318,12 +321,18 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
         }
         if (is_candidate(e)) {
             /* It only touches the pixel: visible unless hidden, never an
-             * occluder (neither a run nor a terminator). */
+             * occluder (neither a run nor a terminator). A candidate back
+             * only in front of every face at the centre: behind one, it is
+             * as likely the inside of a closed surface as a sliver seen
+             * from behind, and outputting it there cost BSP levels 13 %
+             * more PVS for no false negative fewer. */
             bool in_valid = e->interval >= 0 && iv->valid[e->interval] && !iv->hidden[e->interval];
-            if (prefix == 0 || in_valid)
+            bool visible = e->kind == TV_ENTRY_BACK ? prefix == 0 && !face_seen : prefix == 0 || in_valid;
+            if (visible)
                 emit(out, n_out, e->id);
             continue;
         }
+        face_seen = face_seen || is_face;
         if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->valid[e->interval]) {
             /* Every front of a validated interval's run is visible from the
              * viewcell unless the run starts inside an earlier umbra. */

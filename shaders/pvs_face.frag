@@ -13,7 +13,10 @@
 // is visible from v* through part of the pixel: typically a sub-pixel
 // triangle the raster missed), and inserts a front as
 // a candidate front, which P3 outputs where it is not hidden but never lets
-// occlude.
+// occlude. The back of a triangle narrower than a pixel becomes a candidate
+// back the same way: such a sliver may cover no pixel centre at all, so it is
+// in no sequence otherwise (P3 outputs it only in front of every face at the
+// centre; pvs_resolve.glsl's walk).
 #extension GL_GOOGLE_include_directive : require
 #include "mesh_common.glsl"
 #include "pvs_kbuffer.glsl"
@@ -41,6 +44,14 @@ bool covers_centre()
             return false;
     }
     return true;
+}
+
+// Whether the undilated triangle's height over its longest edge is under a
+// pixel: it may then cover no pixel centre along its whole length.
+bool narrower_than_a_pixel()
+{
+    vec2 a = v_s01.zw - v_s01.xy, b = v_s2.xy - v_s01.zw, c = v_s01.xy - v_s2.xy;
+    return abs(a.x * c.y - a.y * c.x) < max(max(length(a), length(b)), length(c));
 }
 
 // Whether the pixel's square meets the undilated triangle (separating axes:
@@ -127,8 +138,8 @@ void main()
         float inside = max(v_near, w - 0.5 * slope); // its nearest depth in the pixel
         if (v_far < nearest || inside <= nearest + slope * TV_PVS_TIE_SLOPES)
             tri_flags[v_triangle] = 1u;
-        if (kind != TV_PVS_KIND_FRONT)
-            return;
+        if (kind == TV_PVS_KIND_BACK && !narrower_than_a_pixel())
+            return; // a wider back covers pixel centres, where it is in the sequence
         // A candidate stands for the part of the triangle inside the pixel,
         // which may be nearer than its plane at the centre: it enters the
         // sequence at the nearest depth it can have there, so that a face

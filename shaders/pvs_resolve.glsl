@@ -73,7 +73,12 @@ void output_id(uint id)
     n_out++;
 }
 
-bool is_candidate(seq_entry e) { return e.kind == TV_ENTRY_FRONT && (e.id & TV_ID_CANDIDATE) != 0u; }
+// A candidate front, or a candidate back (pvs_face.frag: the back of a
+// triangle narrower than a pixel).
+bool is_candidate(seq_entry e)
+{
+    return (e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK) && (e.id & TV_ID_CANDIDATE) != 0u;
+}
 
 float kdepth(uint bits) { return uintBitsToFloat(bits); }
 
@@ -151,7 +156,7 @@ void form_intervals(uint n)
     for (uint i = 0u; i < n; i++) {
         if (ent[i].kind == TV_ENTRY_FRONT && !is_candidate(ent[i]) && iv_run < 0) {
             iv_run = int(i);
-        } else if (ent[i].kind == TV_ENTRY_BACK && iv_run >= 0) {
+        } else if (ent[i].kind == TV_ENTRY_BACK && !is_candidate(ent[i]) && iv_run >= 0) {
             uint k = iv_count++;
             iv_first[k] = uint(iv_run);
             iv_back[k] = i;
@@ -213,6 +218,7 @@ bool walk(uint m)
 {
     int prefix = 0;
     float open = 0.0, span_lo = 0.0, span_hi = 0.0;
+    bool face_seen = false; // a face covering the centre, prior ones included
     for (uint i = 0u; i < m; i++) {
         seq_entry e = ent[S2 + i];
         bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
@@ -230,10 +236,13 @@ bool walk(uint m)
         }
         bool in_valid = e.interval >= 0 && iv_valid[e.interval];
         if (is_candidate(e)) { // touches the pixel only: output unless hidden, never an occluder
-            if (prefix == 0 || (in_valid && !iv_hidden[e.interval]))
+            bool visible = e.kind == TV_ENTRY_BACK ? prefix == 0 && !face_seen
+                                                   : prefix == 0 || (in_valid && !iv_hidden[e.interval]);
+            if (visible)
                 output_id(e.id);
             continue;
         }
+        face_seen = face_seen || is_face;
         if (e.kind == TV_ENTRY_FRONT && in_valid) {
             if (!iv_hidden[e.interval])
                 output_id(e.id);

@@ -565,6 +565,25 @@ static void test_late_face_before_terminator(void)
     check_configuration(&f, "a later layer's face in front of a terminator", 0.1f, FN_SIMPLE, NULL, 0, &quad, 1);
 }
 
+/* The slab again, and 10 m away, just past its edge, a 1.5 cm wide strip
+ * seen from behind (facing away from the whole viewcell, single-sided): half
+ * a PVS pixel wide, so no pixel centre lands on it; v* sees it only behind
+ * the slab, eyes to the right of v* past the slab's edge. Four triangles per
+ * octree leaf put the strip in a later layer than the slab, whose interval
+ * leaves only its hidden range in that layer's sequence. Until the backs of
+ * triangles narrower than a pixel became candidate backs the strip was in
+ * no sequence and was lost. */
+static void test_sliver_seen_from_behind(void)
+{
+    fixture f = {.octree_cap = 4};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -3.0f, -2.0f, -5.1f, -0.05f, 2.0f, -5.0f, m);
+    const float x0 = -0.16f, x1 = -0.145f, y0 = -0.5f, y1 = 0.5f, z = -10.0f;
+    const float strip[4][3] = {{x1, y0, z}, {x0, y0, z}, {x0, y1, z}, {x1, y1, z}}; /* faces -z */
+    uint32_t back = fx_quad(&f.scene, strip, m);
+    check_configuration(&f, "a sliver seen from behind past a slab's edge", 0.1f, FN_SIMPLE, NULL, 0, &back, 1);
+}
+
 /* A pillar whose front face is two quads with a 1.9 cm vertical slit
  * between them, 2.5 m away: 0.65 PVS pixels wide and placed between two
  * PVS pixel centres, so v* sees nothing through it, while eyes of the
@@ -843,6 +862,7 @@ int main(void)
     TV_TEST_RUN(test_open_quad_past_a_slab_edge);
     TV_TEST_RUN(test_late_face_before_terminator);
     TV_TEST_RUN(test_crack_in_a_pillar);
+    TV_TEST_RUN(test_sliver_seen_from_behind);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_fine_tessellation);

@@ -77,7 +77,7 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         kb->front_depth[i] = rnd_depth();
         kb->front_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) | (rnd_u(4) == 0 ? TV_ID_CANDIDATE : 0u);
         kb->back_depth[i] = rnd_depth();
-        kb->back_tri[i] = base + rnd_u(IDS_PER_PIXEL);
+        kb->back_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) | (rnd_u(4) == 0 ? TV_ID_CANDIDATE : 0u);
         kb->trim_depth[i] = rnd_depth();
         kb->trim_region[i] = rnd_region();
         kb->umbra_depth[i] = rnd_depth() + 0.05f * (float)rnd_u(3);

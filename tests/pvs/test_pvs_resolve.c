@@ -106,6 +106,27 @@ static void test_candidate_fronts(void)
     TV_CHECK(alone.stencil == TV_STENCIL_SEALED);
 }
 
+#define CB(d, id) {TV_ENTRY_BACK, d, (id) | TV_ID_CANDIDATE}
+
+/* Candidate backs (the back of a triangle narrower than a pixel, touching
+ * it off its centre) are output only in front of every face at the centre
+ * and outside every hidden range: CB 7 is, CB 8 behind the validated
+ * interval is not, where a candidate front (9) is. Neither closes an
+ * interval: [F 5, B 3] stays one interval, validated by the trim at 2, so
+ * F 5 does not become a terminator. */
+static void test_candidate_backs(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, CB(0.5f, 7), F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), CB(4.0f, 8), C(4.0f, 9),
+                         F(5.0f, 3), B(6.0f));
+    CHECK_OUT(r, 7, 1, 9, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    pvs_pixel_state open = {0};
+    r = RUN(open, F(1.0f, 5), CB(1.5f, 6), T(2.0f, 1), B(3.0f));
+    CHECK_OUT(r, 5);
+    TV_CHECK(open.stencil == TV_STENCIL_TRIMMED);
+}
+
 /* R1: f1 t1 b1 validated (u1 at 3) -> f1 out; f2 inside u1 ignored; b2
  * behind u1 is the terminator; f3 never reached. A later layer's faces
  * (a triangle is drawn in the layer of its earliest octree leaf, so a
@@ -543,6 +564,7 @@ static void test_random_sequences_order_free(void)
 int main(void)
 {
     TV_TEST_RUN(test_candidate_fronts);
+    TV_TEST_RUN(test_candidate_backs);
     TV_TEST_RUN(test_figure9_r1);
     TV_TEST_RUN(test_figure9_r2);
     TV_TEST_RUN(test_cracked_interval);
