@@ -75,6 +75,11 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id)
         kbuf->front_tri[s] = id;
         return true;
     case TV_ENTRY_BACK:
+        /* Candidate backs fill at most half the list: a real back they
+         * pushed out would merge two intervals (more output). They are
+         * dropped without a count, so the list does not read as overflowed. */
+        if ((id & TV_ID_CANDIDATE) != 0 && kbuf->back_count >= TV_K_BACK / 2)
+            return false;
         if (!claim(&kbuf->back_count, TV_K_BACK, &s))
             return false;
         kbuf->back_depth[s] = depth;
@@ -108,6 +113,14 @@ static uint32_t min_u32(uint32_t a, uint32_t b)
 static bool is_candidate(const seq_entry* e)
 {
     return (e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK) && (e->id & TV_ID_CANDIDATE) != 0;
+}
+
+/* Nothing hides it in a later layer's sequence only where nothing was in
+ * front of it in this one, and there it is output now: it is neither
+ * carried nor a face that decides the carried hidden range. */
+static bool is_candidate_back(const seq_entry* e)
+{
+    return e->kind == TV_ENTRY_BACK && is_candidate(e);
 }
 
 /* Appends a front's triangle to the output; prior faces are already in the
@@ -371,7 +384,7 @@ static void carry_range(pvs_pixel_state* s, const seq_entry* seq, uint32_t n, co
         tail = seq[iv->run].depth;
     } else {
         for (uint32_t i = 0; i < n; i++) {
-            if (seq[i].kind == TV_ENTRY_FRONT || seq[i].kind == TV_ENTRY_BACK)
+            if ((seq[i].kind == TV_ENTRY_FRONT || seq[i].kind == TV_ENTRY_BACK) && !is_candidate_back(&seq[i]))
                 tail = seq[i].depth;
         }
         if (tail == -INFINITY)
@@ -404,6 +417,8 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
     pvs_entry next[TV_K_CARRY];
     uint32_t c = 0;
     for (uint32_t i = iv->run < 0 ? n : (uint32_t)iv->run; i < n; i++) {
+        if (is_candidate_back(&seq[i]))
+            continue;
         if (c == TV_K_CARRY)
             return false;
         next[c++] = (pvs_entry){seq[i].depth, seq[i].kind, seq[i].id};

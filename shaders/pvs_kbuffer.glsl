@@ -52,6 +52,8 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
         }
         kfront[p * view.k + slot] = uvec2(d, id);
     } else if (kind == TV_PVS_KIND_BACK) {
+        if ((id & TV_ID_CANDIDATE) != 0u && pixcount[p].y >= view.k / 2u)
+            return false; // pvs_kbuf_push: half the list stays for real backs
         slot = atomicAdd(pixcount[p].y, 1u);
         if (slot >= view.k)
             return false;

@@ -80,6 +80,10 @@ bool is_candidate(seq_entry e)
     return (e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK) && (e.id & TV_ID_CANDIDATE) != 0u;
 }
 
+// resolve.c's is_candidate_back: neither carried nor deciding the carried
+// hidden range.
+bool is_candidate_back(seq_entry e) { return e.kind == TV_ENTRY_BACK && is_candidate(e); }
+
 float kdepth(uint bits) { return uintBitsToFloat(bits); }
 
 // The overflow policy: every front this pixel knows of is output and the
@@ -275,7 +279,7 @@ void carry_range(uint n)
     } else {
         bool any = false;
         for (uint i = 0u; i < n; i++) {
-            if (ent[i].kind == TV_ENTRY_FRONT || ent[i].kind == TV_ENTRY_BACK) {
+            if ((ent[i].kind == TV_ENTRY_FRONT || ent[i].kind == TV_ENTRY_BACK) && !is_candidate_back(ent[i])) {
                 tail = ent[i].depth;
                 any = true;
             }
@@ -304,6 +308,8 @@ bool carry_run(uint n)
     seq_entry next[TV_K_CARRY];
     uint c = 0u;
     for (uint i = iv_run < 0 ? n : uint(iv_run); i < n; i++) {
+        if (is_candidate_back(ent[i]))
+            continue;
         if (c == TV_K_CARRY)
             return false;
         next[c++] = ent[i];

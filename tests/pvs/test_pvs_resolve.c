@@ -125,6 +125,15 @@ static void test_candidate_backs(void)
     r = RUN(open, F(1.0f, 5), CB(1.5f, 6), T(2.0f, 1), B(3.0f));
     CHECK_OUT(r, 5);
     TV_CHECK(open.stencil == TV_STENCIL_TRIMMED);
+    /* they take at most half the back list, so real backs keep the rest */
+    pvs_kbuf k = {0};
+    uint32_t stored = 0;
+    for (uint32_t i = 0; i < TV_K_BACK; i++)
+        stored += pvs_kbuf_push(&k, TV_ENTRY_BACK, 1.0f + (float)i, i | TV_ID_CANDIDATE);
+    TV_CHECK(stored == TV_K_BACK / 2 && k.back_count == TV_K_BACK / 2);
+    for (uint32_t i = 0; i < TV_K_BACK / 2; i++)
+        TV_CHECK(pvs_kbuf_push(&k, TV_ENTRY_BACK, 50.0f + (float)i, 100 + i));
+    TV_CHECK(!pvs_kbuf_push(&k, TV_ENTRY_BACK, 99.0f, 200));
 }
 
 /* R1: f1 t1 b1 validated (u1 at 3) -> f1 out; f2 inside u1 ignored; b2
