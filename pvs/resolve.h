@@ -34,7 +34,11 @@
  * pixel without covering its centre) take no part in intervals and never
  * terminate: one is output when the walk reaches it outside every hidden
  * range, or inside a validated interval whose fronts are output. Output ids
- * never carry the flag.
+ * never carry the flag. Candidate backs (back id | TV_ID_CANDIDATE: the back
+ * of a triangle narrower than a pixel, which may cover no centre at all)
+ * likewise, but are output only outside every hidden range and in front of
+ * every face of the sequence; they are never carried and fill at most half
+ * the back list (pvs_kbuf_push).
  *
  * Overflow policy (never lose a visible front), per list:
  * - fronts: P2 keeps the nearest depth of the fronts that find the list full

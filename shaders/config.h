@@ -105,7 +105,9 @@
 /* Flag on a front's triangle id: a candidate front, i.e. a triangle that
  * touches the pixel without covering its centre (P2's dilated pass). It is
  * output when not hidden but never occludes: it neither starts an interval
- * nor terminates the pixel. Triangle ids stay below it. */
+ * nor terminates the pixel. On a back's id (a candidate back: the back of a
+ * triangle narrower than a pixel) the same, but output only in front of
+ * every face at the centre. Triangle ids stay below it. */
 #define TV_ID_CANDIDATE 0x80000000u
 
 /* Id of the "prior" face entries: the nearest faces (from v*) covering a
