@@ -159,7 +159,7 @@ void pvs_record_resolve(pvs_context* ctx, VkCommandBuffer cmd)
 static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
 {
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_PIXCOUNT].buffer, 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_FRONT_LOST].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
+    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_LOST].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
     uint32_t c[TV_PVS_C_PER_LAYER] = {0};
     for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_UMBRA; d += 4)
         c[d + 1] = 1; /* instanceCount */

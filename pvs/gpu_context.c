@@ -118,7 +118,7 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_ACTIVE_LIST, pixels * 4},
         {TV_PVS_BIND_TRI_FLAGS, tris * 4},
         {TV_PVS_BIND_CENTRE_DEPTH, pixels * 8},
-        {TV_PVS_BIND_FRONT_LOST, pixels * 8},
+        {TV_PVS_BIND_LOST, pixels * TV_PVS_LOST_STRIDE * 4},
         {TV_PVS_BIND_COOP_LIST, pixels * 4},
     };
     for (size_t i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {

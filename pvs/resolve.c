@@ -86,8 +86,11 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id)
         kbuf->back_tri[s] = id;
         return true;
     case TV_ENTRY_TRIM:
-        if (!claim(&kbuf->trim_count, TV_K_TRIM, &s))
+        if (!claim(&kbuf->trim_count, TV_K_TRIM, &s)) {
+            if (kbuf->trim_lost == 0.0f || depth < kbuf->trim_lost)
+                kbuf->trim_lost = depth;
             return false;
+        }
         kbuf->trim_depth[s] = depth;
         kbuf->trim_region[s] = id;
         return true;
@@ -221,7 +224,7 @@ typedef struct intervals {
     bool cracked[IV_MAX]; /* a crack edge's trim lies in it or just in front (TV_REGION_CRACK) */
     float end[IV_MAX]; /* depth where the hidden range of a valid interval ends */
     int32_t run;       /* first front of the trailing unfinished run, -1 none */
-    bool trims_lost;   /* the trim list overflowed: see validate() */
+    float trims_lost;  /* nearest depth of a trim the list had no room for (INFINITY: none) */
 } intervals;
 
 /* Greedy simple intervals [f, b] over the fronts and backs, each extended at
@@ -249,15 +252,16 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
 /* An interval is valid when a trim fragment lies in [f, b]. Its hidden range
  * ends at the nearest umbra of the validating regions (the most conservative
  * choice), at b when none of them left an umbra here, never before b.
- * When trims were lost, any interval may have been validated by one of them,
- * and the nearest umbra may have been theirs: every interval is valid and
- * hides up to its back only. */
+ * When trims were lost, an interval reaching back to the nearest of them
+ * may have been validated by one, and the nearest umbra may have been
+ * theirs: it is valid and hides up to its back only. */
 static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* seq, uint32_t n,
                      intervals* iv)
 {
     for (uint32_t v = 0; v < iv->count; v++) {
         float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
-        iv->valid[v] = iv->trims_lost;
+        bool lost = hi >= iv->trims_lost;
+        iv->valid[v] = lost;
         iv->cracked[v] = false;
         iv->end[v] = hi;
         for (uint32_t i = 0; i < n; i++) {
@@ -266,7 +270,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
             bool crack = seq[i].kind == TV_ENTRY_TRIM && seq[i].id != TV_ID_PRIOR && (seq[i].id & TV_REGION_CRACK) != 0;
             if (crack && seq[i].depth >= lo - TV_PVS_CRACK_SLACK_M && seq[i].depth <= hi)
                 iv->cracked[v] = true;
-            if (iv->trims_lost || seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
+            if (lost || seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
                 continue;
             float u = hi;
             if (!umbra_depth(s, k, seq[i].id, &u) || u < hi)
@@ -416,17 +420,25 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
 {
     pvs_entry next[TV_K_CARRY];
     uint32_t c = 0;
-    for (uint32_t i = iv->run < 0 ? n : (uint32_t)iv->run; i < n; i++) {
-        if (is_candidate_back(&seq[i]))
+    /* The stand-in for lost trims: a lost trim validates the run once its
+     * back arrives if it lies behind the run's first front, and all of
+     * them lie at or behind trims_lost. */
+    bool stand_in = iv->run >= 0 && iv->trims_lost < INFINITY;
+    seq_entry lost = make_entry(0.0f, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
+    if (stand_in)
+        lost.depth = fmaxf(seq[iv->run].depth, iv->trims_lost);
+    for (uint32_t i = iv->run < 0 ? n : (uint32_t)iv->run; i <= n; i++) {
+        if (stand_in && (i == n || entry_less(&lost, &seq[i]))) { /* kept in depth order */
+            if (c == TV_K_CARRY)
+                return false;
+            next[c++] = (pvs_entry){lost.depth, lost.kind, lost.id};
+            stand_in = false;
+        }
+        if (i == n || is_candidate_back(&seq[i]))
             continue;
         if (c == TV_K_CARRY)
             return false;
         next[c++] = (pvs_entry){seq[i].depth, seq[i].kind, seq[i].id};
-        if (iv->trims_lost && i == (uint32_t)iv->run) {
-            if (c == TV_K_CARRY)
-                return false;
-            next[c++] = (pvs_entry){seq[i].depth, TV_ENTRY_TRIM, TV_ID_PRIOR};
-        }
     }
     uint32_t run_entries = c;
     for (uint32_t i = 0; i < run_entries; i++) {
@@ -485,7 +497,7 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
     intervals iv;
     uint32_t n = gather(state, kbuf, first, seq);
     form_intervals(seq, n, &iv);
-    iv.trims_lost = kbuf->trim_count > TV_K_TRIM;
+    iv.trims_lost = kbuf->trim_count > TV_K_TRIM ? (has_depth(kbuf->trim_lost) ? kbuf->trim_lost : 0.0f) : INFINITY;
     validate(state, kbuf, seq, n, &iv);
     uint32_t m = replace_backs(state, seq, n, &iv, seq2);
     uint32_t n_out = 0;

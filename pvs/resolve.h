@@ -51,10 +51,13 @@
  *   output, and in every later layer all fronts are output and the pixel is
  *   never sealed. The same when the carry does not fit. Lost candidates
  *   change nothing (they never occlude).
- * - trims: any interval may have been validated by a lost trim, whose umbra
- *   may have been the nearest: this layer's intervals are all valid and hide
- *   up to their backs only; a carried run gets a trim without umbra
- *   (region TV_ID_PRIOR) at its first front, which does the same later.
+ * - trims: P2 keeps the nearest depth of the lost trims (trim_lost). An
+ *   interval whose back lies at or behind it may have been validated by a
+ *   lost trim, whose umbra may have been the nearest: it counts as valid and
+ *   hides up to its back only. Intervals in front of it are complete and
+ *   resolve as usual. A carried run gets a trim without umbra (region
+ *   TV_ID_PRIOR) at its first front or trim_lost, whichever is farther,
+ *   which does the same when its back arrives.
  * - backs: nothing to do. A lost back merges two intervals into one (valid
  *   when either was, hiding no further than the later back) or leaves a run
  *   open; it never creates a terminator: only more output.
@@ -103,6 +106,8 @@ typedef struct pvs_kbuf {
     /* Nearest depth of a front (not a candidate) that found the front list
      * full (0: none); pvs_kbuf_push keeps it, as P2's atomicMin does. */
     float front_lost;
+    /* Nearest depth of a trim that found the trim list full (0: none). */
+    float trim_lost;
 } pvs_kbuf;
 
 /* One trim-sequence entry. id: triangle id for fronts and backs, trim-region

@@ -38,7 +38,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ACTIVE_LIST) PVS_RW buffe
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_TRI_FLAGS) PVS_RW buffer pvs_flags_buf { uint tri_flags[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LAYER_STATS) PVS_RW buffer pvs_layer_stats_buf { uvec4 layer_stats[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CENTRE_DEPTH) PVS_RW coherent buffer pvs_centre_buf { uint centre_depth[]; };
-layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_FRONT_LOST) PVS_RW coherent buffer pvs_front_lost_buf { uint front_lost[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LOST) PVS_RW coherent buffer pvs_lost_buf { uint lost[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_COOP_LIST) PVS_RW buffer pvs_coop_list_buf { uint coop_list[]; };
 
 layout(push_constant) uniform pvs_push_block {

@@ -83,14 +83,14 @@ void spill(uint p, float w, float slope)
     if (pixcount[p].x <= view.k || pixstate[p].x == TV_STENCIL_UNTRIMMED)
         return;
     if ((pc.kind & TV_PVS_KIND_WIDE) == 0u) {
-        if (pixstate[p].x == TV_STENCIL_OVERFLOW && front_lost[2u * p] != 0x7F800000u)
+        if (pixstate[p].x == TV_STENCIL_OVERFLOW && lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_FRONT] != 0x7F800000u)
             tri_flags[v_triangle] = 1u;
         return;
     }
     if (v_s2.z == 0.0 || covers_centre())
         return; // not a candidate: the exact spill draw's
     float depth = max(v_near, w - 0.5 * slope); // as P2 pushed it
-    if (depth < uintBitsToFloat(front_lost[2u * p + 1u])) // P3's bound
+    if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE])) // P3's bound
         tri_flags[v_triangle] = 1u;
 }
 

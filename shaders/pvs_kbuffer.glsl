@@ -47,7 +47,7 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
     if (kind == TV_PVS_KIND_FRONT) {
         slot = atomicAdd(pixcount[p].x, 1u);
         if (slot >= view.k) {
-            atomicMin(front_lost[2u * p + ((id & TV_ID_CANDIDATE) != 0u ? 1u : 0u)], d);
+            atomicMin(lost[TV_PVS_LOST_STRIDE * p + ((id & TV_ID_CANDIDATE) != 0u ? TV_PVS_LOST_CANDIDATE : TV_PVS_LOST_FRONT)], d);
             return false;
         }
         kfront[p * view.k + slot] = uvec2(d, id);
@@ -60,8 +60,10 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
         kback[p * view.k + slot] = uvec2(d, id);
     } else if (kind == TV_PVS_KIND_TRIM) {
         slot = atomicAdd(pixcount[p].z, 1u);
-        if (slot >= view.k)
+        if (slot >= view.k) {
+            atomicMin(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_TRIM], d);
             return false;
+        }
         ktrim[p * view.k + slot] = uvec2(d, id);
     } else {
         slot = atomicAdd(pixcount[p].w, 1u);

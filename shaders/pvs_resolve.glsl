@@ -40,7 +40,7 @@ uint iv_count;
 uint iv_first[IV_MAX], iv_back[IV_MAX];
 bool iv_valid[IV_MAX];
 bool iv_cracked[IV_MAX]; // a crack edge's trim lies in it or just in front (TV_REGION_CRACK)
-bool trims_lost; // the trim list overflowed: see validate()
+float trims_lost; // nearest depth of a trim the list had no room for (+inf: none): see validate()
 bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
 float iv_end[IV_MAX];
 int iv_run;
@@ -176,14 +176,15 @@ void validate(uint n)
 {
     for (uint v = 0u; v < iv_count; v++) {
         float lo = ent[iv_first[v]].depth, hi = ent[iv_back[v]].depth;
-        iv_valid[v] = trims_lost;
+        bool lost_here = hi >= trims_lost; // a lost trim may validate it, and its umbra be the nearest
+        iv_valid[v] = lost_here;
         iv_cracked[v] = false;
         iv_end[v] = hi;
         for (uint i = 0u; i < n; i++) {
             bool crack = ent[i].kind == TV_ENTRY_TRIM && ent[i].id != TV_ID_PRIOR && (ent[i].id & TV_REGION_CRACK) != 0u;
             if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
                 iv_cracked[v] = true;
-            if (trims_lost || ent[i].kind != TV_ENTRY_TRIM || ent[i].depth < lo || ent[i].depth > hi)
+            if (lost_here || ent[i].kind != TV_ENTRY_TRIM || ent[i].depth < lo || ent[i].depth > hi)
                 continue;
             float u = hi;
             if (!umbra_depth(ent[i].id, u) || u < hi)
@@ -307,17 +308,21 @@ bool carry_run(uint n)
 {
     seq_entry next[TV_K_CARRY];
     uint c = 0u;
-    for (uint i = iv_run < 0 ? n : uint(iv_run); i < n; i++) {
-        if (is_candidate_back(ent[i]))
+    // resolve.c's stand-in for lost trims, kept in depth order
+    bool stand_in = iv_run >= 0 && trims_lost < kdepth(0x7F800000u);
+    seq_entry standin = make_entry(stand_in ? max(ent[iv_run].depth, trims_lost) : 0.0, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
+    for (uint i = iv_run < 0 ? n : uint(iv_run); i <= n; i++) {
+        if (stand_in && (i == n || entry_less(standin, ent[i]))) {
+            if (c == TV_K_CARRY)
+                return false;
+            next[c++] = standin;
+            stand_in = false;
+        }
+        if (i == n || is_candidate_back(ent[i]))
             continue;
         if (c == TV_K_CARRY)
             return false;
         next[c++] = ent[i];
-        if (trims_lost && i == uint(iv_run)) {
-            if (c == TV_K_CARRY)
-                return false;
-            next[c++] = make_entry(ent[i].depth, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
-        }
     }
     uint run_entries = c;
     for (uint i = 0u; i < run_entries; i++) {
@@ -361,7 +366,7 @@ uint resolve_begin(out bool first)
 uint resolve_intervals(uint n)
 {
     form_intervals(n);
-    trims_lost = cnt.z > view.k;
+    trims_lost = cnt.z > view.k ? kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_TRIM]) : kdepth(0x7F800000u);
     validate(n);
     return replace_backs(n);
 }
@@ -369,9 +374,9 @@ uint resolve_intervals(uint n)
 // Returns true when the overflow policy handled the pixel.
 bool resolve_end(uint n, uint m)
 {
-    float lost = kdepth(front_lost[2u * P]);
+    float front_lost = kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_FRONT]);
     bool sealed = walk(m);
-    if (lost < kdepth(0x7F800000u) && !(sealed && term_depth < lost)) {
+    if (front_lost < kdepth(0x7F800000u) && !(sealed && term_depth < front_lost)) {
         resolve_overflow(); // outputs what the walk did, and more
         return true;
     }
@@ -396,16 +401,16 @@ bool resolve_end(uint n, uint m)
 // Fragments P2 had no room for (pvs_spill_output of resolve.h): the exact
 // spill draw outputs every front of an overflowed pixel that lost a front;
 // the dilated one the candidates nearer than the bound left in
-// front_lost[2P + 1]: all of them at an overflowed or open pixel, those in
+// lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE]: all of them at an overflowed or open pixel, those in
 // front of the terminator at a pixel sealed now, none otherwise.
 void request_spill()
 {
     const float inf = uintBitsToFloat(0x7F800000u);
-    if (stencil == TV_STENCIL_OVERFLOW && front_lost[2u * P] != 0x7F800000u)
+    if (stencil == TV_STENCIL_OVERFLOW && lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_FRONT] != 0x7F800000u)
         counters[TV_PVS_C_DRAW_SPILL] = counters[TV_PVS_C_DRAW_FF];
     float bound = stencil == TV_STENCIL_SEALED ? term_depth : inf;
-    bool candidates = kdepth(front_lost[2u * P + 1u]) < bound;
-    front_lost[2u * P + 1u] = candidates ? floatBitsToUint(bound) : 0u;
+    bool candidates = kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE]) < bound;
+    lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE] = candidates ? floatBitsToUint(bound) : 0u;
     if (candidates)
         counters[TV_PVS_C_DRAW_SPILL_WIDE] = counters[TV_PVS_C_DRAW_FF];
 }

@@ -2,12 +2,15 @@
  *
  * A test executable calls TV_TEST_RUN(fn) for each case and returns
  * tv_test_finish(); a failed check prints file:line and the expression,
- * marks the case failed and continues with the next check. */
+ * marks the case failed and continues with the next check. With TV_TEST_ONLY
+ * set in the environment, only the cases whose name contains it run. */
 #ifndef TRIMVR_TEST_H
 #define TRIMVR_TEST_H
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 static int tv_test_failures;
 static int tv_test_case_failed;
@@ -36,6 +39,9 @@ static int tv_test_failed_cases;
 
 #define TV_TEST_RUN(fn)                                      \
     do {                                                     \
+        const char* tv_only_ = getenv("TV_TEST_ONLY");       \
+        if (tv_only_ && !strstr(#fn, tv_only_))              \
+            break;                                           \
         tv_test_case_failed = 0;                             \
         fn();                                                \
         if (tv_test_case_failed) {                           \

@@ -751,6 +751,35 @@ static void test_tiny_k_overflow(void)
     fixture_close(&f);
 }
 
+/* Eight boxes behind a wall, sized with their depth so that their
+ * silhouettes coincide in the image: the pixels along them get more trims
+ * than k = 4 holds. All the lost trims lie behind the wall, so they cannot
+ * have eroded it: the wall still seals those pixels and every box is
+ * culled. Until 2026-11-24 a lost trim made every interval of the pixel
+ * count as validated, and the boxes' fronts were output there. */
+static void test_trims_lost_behind_a_wall(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -3.0f, -2.0f, -6.2f, 3.0f, 2.0f, -6.0f, m);
+    uint32_t first = f.scene.triangle_count;
+    for (int i = 0; i < 8; i++) {
+        float z = 10.0f + (float)i, h = 0.05f * z;
+        add_box(&f.scene, -h, -h, -z - 0.1f, h, h, -z, m);
+    }
+    scn_scene_update_bounds(&f.scene);
+    fixture_open(&f, 4);
+    pvs_result r;
+    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.1f);
+    TV_CHECK(compute(&f, &vc, &r));
+    TV_CHECK(r.stats.overflow_pixels > 0);
+    uint32_t boxes = count_in_range(&r, first, 8 * 12);
+    printf("  box triangles in the PVS: %u of 96\n", boxes);
+    TV_CHECK(boxes == 0);
+    TV_CHECK(apex_fn(&f, &r, &vc) == 0);
+    fixture_close(&f);
+}
+
 /* ---- hybrid sort: per thread or per workgroup, the same PVS ---- */
 
 /* The PVS of the interior's room with every sequence sorted per thread, those
@@ -868,6 +897,7 @@ int main(void)
     TV_TEST_RUN(test_fine_tessellation);
     TV_TEST_RUN(test_needles);
     TV_TEST_RUN(test_tiny_k_overflow);
+    TV_TEST_RUN(test_trims_lost_behind_a_wall);
     TV_TEST_RUN(test_hybrid_sort);
     TV_TEST_RUN(test_city_no_false_negatives);
     TV_TEST_RUN(test_worker_thread);

@@ -86,6 +86,7 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     kb->nearest_front = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->nearest_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->front_lost = rnd_u(8) == 0 ? rnd_depth() : 0.0f;
+    kb->trim_lost = rnd_u(2) ? rnd_depth() : 0.0f; /* read when the trim list overflowed */
     if (st->stencil == TV_STENCIL_SEALED) {
         /* P2 stores nothing at a sealed pixel (it outputs the faces
          * pvs_sealed_output admits itself); P3 must keep its state */
@@ -125,7 +126,7 @@ static bool make_host_visible(pvs_context* ctx)
     const uint32_t bindings[] = {TV_PVS_BIND_KFRONT, TV_PVS_BIND_KBACK, TV_PVS_BIND_KTRIM,
                                  TV_PVS_BIND_KUMBRA, TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE,
                                  TV_PVS_BIND_CARRY, TV_PVS_BIND_ACTIVE_LIST, TV_PVS_BIND_CENTRE_DEPTH,
-                                 TV_PVS_BIND_FRONT_LOST, TV_PVS_BIND_ACTIVE};
+                                 TV_PVS_BIND_LOST, TV_PVS_BIND_ACTIVE};
     char err[256];
     for (size_t i = 0; i < sizeof bindings / sizeof bindings[0]; i++) {
         rnd_buffer* b = &ctx->buffers[bindings[i]];
@@ -153,7 +154,7 @@ static void upload(pvs_context* ctx, const case_data* c)
     uint32_t* carry = ctx->buffers[TV_PVS_BIND_CARRY].mapped;
     uint32_t* active = ctx->buffers[TV_PVS_BIND_ACTIVE_LIST].mapped;
     uint32_t* centre = ctx->buffers[TV_PVS_BIND_CENTRE_DEPTH].mapped;
-    uint32_t* lost = ctx->buffers[TV_PVS_BIND_FRONT_LOST].mapped;
+    uint32_t* lost = ctx->buffers[TV_PVS_BIND_LOST].mapped;
     for (uint32_t p = 0; p < PIXELS; p++) {
         const pvs_kbuf* kb = &c->kbuf[p];
         const pvs_pixel_state* st = &c->state[p];
@@ -175,8 +176,10 @@ static void upload(pvs_context* ctx, const case_data* c)
         active[p] = p;
         centre[2 * p] = fbits(kb->nearest_front);
         centre[2 * p + 1] = fbits(kb->nearest_back);
-        lost[2 * p] = kb->front_lost > 0.0f ? fbits(kb->front_lost) : fbits(INFINITY);
-        lost[2 * p + 1] = fbits(INFINITY);
+        uint32_t* l = lost + TV_PVS_LOST_STRIDE * p;
+        l[TV_PVS_LOST_FRONT] = kb->front_lost > 0.0f ? fbits(kb->front_lost) : fbits(INFINITY);
+        l[TV_PVS_LOST_CANDIDATE] = fbits(INFINITY);
+        l[TV_PVS_LOST_TRIM] = fbits(kb->trim_lost);
     }
     memset(ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped, 0, ctx->buffers[TV_PVS_BIND_TRI_FLAGS].size);
     memset(ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped, 0, ctx->buffers[TV_PVS_BIND_LAYER_STATS].size);

@@ -404,10 +404,13 @@ static void test_overflow_umbra_list(void)
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
 }
 
-/* Lost trims: every interval counts as validated, hiding up to its back.
- * Alone, F1 would terminate; with trims lost F1, F2, F3 are output and the
- * pixel stays open; a carried run gets a stand-in trim that validates it in
- * the next layer. */
+/* Lost trims: every interval reaching back to the nearest lost trim counts
+ * as validated, hiding up to its back. Alone, F1 would terminate; with trims
+ * lost at 0.5 F1, F2, F3 are output and the pixel stays open; a carried run
+ * gets a stand-in trim that validates it in the next layer. Trims lost
+ * behind an interval cannot have validated it (the sequence is complete in
+ * front of them), and the stand-in lies at the nearest lost trim when that
+ * is behind the run's front. */
 static void test_overflow_trim_list(void)
 {
     item items[TV_K_TRIM + 8];
@@ -426,6 +429,32 @@ static void test_overflow_trim_list(void)
     layer_result r2 = RUN(s, B(4.5f), F(5.0f, 5), B(5.5f), F(6.0f, 6));
     CHECK_OUT(r2, 4, 5); /* [4, 4.5] validated by the stand-in, 5 terminates */
     TV_CHECK(!r2.overflowed && s.stencil == TV_STENCIL_SEALED);
+
+    n = 0;
+    for (uint32_t i = 0; i <= TV_K_TRIM; i++)
+        items[n++] = (item)T(5.0f, i);
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)F(2.0f, 2);
+    pvs_pixel_state near = {0};
+    r = run_layer(&near, items, n);
+    CHECK_OUT(r, 1); /* [1, 1.5] lies in front of every lost trim: F1 terminates */
+    TV_CHECK(r.overflowed && near.stencil == TV_STENCIL_SEALED && near.term_depth == 1.0f);
+    n = 0;
+    for (uint32_t i = 0; i < TV_K_TRIM; i++)
+        items[n++] = (item)T(0.5f, i);
+    items[n++] = (item)T(5.0f, 99); /* lost */
+    items[n++] = (item)F(1.0f, 1);
+    pvs_pixel_state run = {0};
+    r = run_layer(&run, items, n);
+    TV_CHECK(r.overflowed && run.stencil == TV_STENCIL_TRIMMED && run.carry_count == 2);
+    TV_CHECK(run.carry[1].kind == TV_ENTRY_TRIM && run.carry[1].id == TV_ID_PRIOR && run.carry[1].depth == 5.0f);
+    pvs_pixel_state run2 = run;
+    r2 = RUN(run, B(4.5f), F(6.0f, 6), B(6.5f));
+    CHECK_OUT(r2, 1); /* [1, 4.5] not validated by a trim lost at 5: F1 terminates */
+    TV_CHECK(run.stencil == TV_STENCIL_SEALED && run.term_depth == 1.0f);
+    r2 = RUN(run2, B(5.5f), F(6.0f, 6), B(6.5f));
+    CHECK_OUT(r2, 1, 6); /* [1, 5.5] may have been: F1 output, F6 terminates */
 }
 
 /* A lost back merges two intervals: [F1, B1.5] (valid, umbra 1.8) and
