@@ -249,7 +249,24 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
     }
 }
 
-/* An interval is valid when a trim fragment lies in [f, b]. Its hidden range
+/* Whether trim seq[i]'s region meets the depth range [lo, hi] at this pixel:
+ * one of its fragments lies in it, or it has fragments on both sides. P1
+ * draws a trim quad up to three times, at its solid's near plane, at the
+ * midpoint and (grazing fronts) at the far plane; a thin solid's interval
+ * can fall between two of those depths, and the solid lies between them. */
+static bool region_meets(const seq_entry* seq, uint32_t n, uint32_t i, float lo, float hi)
+{
+    float d = seq[i].depth;
+    if (d >= lo && d <= hi)
+        return true;
+    for (uint32_t j = 0; j < n; j++) {
+        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == seq[i].id && (d < lo ? seq[j].depth >= lo : seq[j].depth <= hi))
+            return true;
+    }
+    return false;
+}
+
+/* An interval is valid when a trim region meets [f, b] (region_meets). Its hidden range
  * ends at the nearest umbra of the validating regions (the most conservative
  * choice), at b when none of them left an umbra here, never before b.
  * When trims were lost, an interval reaching back to the nearest of them
@@ -270,7 +287,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
             bool crack = seq[i].kind == TV_ENTRY_TRIM && seq[i].id != TV_ID_PRIOR && (seq[i].id & TV_REGION_CRACK) != 0;
             if (crack && seq[i].depth >= lo - TV_PVS_CRACK_SLACK_M && seq[i].depth <= hi)
                 iv->cracked[v] = true;
-            if (lost || seq[i].kind != TV_ENTRY_TRIM || seq[i].depth < lo || seq[i].depth > hi)
+            if (lost || seq[i].kind != TV_ENTRY_TRIM || !region_meets(seq, n, i, lo, hi))
                 continue;
             float u = hi;
             if (!umbra_depth(s, k, seq[i].id, &u) || u < hi)
@@ -420,25 +437,27 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
 {
     pvs_entry next[TV_K_CARRY];
     uint32_t c = 0;
-    /* The stand-in for lost trims: a lost trim validates the run once its
-     * back arrives if it lies behind the run's first front, and all of
-     * them lie at or behind trims_lost. */
-    bool stand_in = iv->run >= 0 && iv->trims_lost < INFINITY;
-    seq_entry lost = make_entry(0.0f, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
-    if (stand_in)
-        lost.depth = fmaxf(seq[iv->run].depth, iv->trims_lost);
-    for (uint32_t i = iv->run < 0 ? n : (uint32_t)iv->run; i <= n; i++) {
-        if (stand_in && (i == n || entry_less(&lost, &seq[i]))) { /* kept in depth order */
-            if (c == TV_K_CARRY)
-                return false;
-            next[c++] = (pvs_entry){lost.depth, lost.kind, lost.id};
-            stand_in = false;
-        }
-        if (i == n || is_candidate_back(&seq[i]))
+    uint32_t run = iv->run < 0 ? n : (uint32_t)iv->run;
+    for (uint32_t i = run; i < n; i++) {
+        if (is_candidate_back(&seq[i]))
             continue;
         if (c == TV_K_CARRY)
             return false;
-        next[c++] = (pvs_entry){seq[i].depth, seq[i].kind, seq[i].id};
+        next[c] = (pvs_entry){seq[i].depth, seq[i].kind, seq[i].id};
+        /* A region with fragments in front of the run's first front too
+         * meets any interval the run will form (region_meets): carried at
+         * that front, as those fragments are not. */
+        if (seq[i].kind == TV_ENTRY_TRIM && region_meets(seq, run + 1, i, seq[run].depth, seq[run].depth))
+            next[c].depth = seq[run].depth;
+        c++;
+    }
+    /* The stand-in for lost trims: a lost trim validates the run once its
+     * back arrives if it lies behind the run's first front, and all of
+     * them lie at or behind trims_lost. */
+    if (iv->run >= 0 && iv->trims_lost < INFINITY) {
+        if (c == TV_K_CARRY)
+            return false;
+        next[c++] = (pvs_entry){fmaxf(seq[run].depth, iv->trims_lost), TV_ENTRY_TRIM, TV_ID_PRIOR};
     }
     uint32_t run_entries = c;
     for (uint32_t i = 0; i < run_entries; i++) {

@@ -121,7 +121,7 @@ typedef struct pvs_entry {
 typedef struct pvs_pixel_state {
     uint32_t stencil; /* TV_STENCIL_*; zero-initialised = untrimmed */
     uint32_t carry_count;
-    pvs_entry carry[TV_K_CARRY]; /* kinds FRONT, TRIM, UMBRA, in depth order */
+    pvs_entry carry[TV_K_CARRY]; /* kinds FRONT, TRIM, UMBRA; fronts in depth order (trims need not be) */
     /* A hidden range when hide_begin < hide_end: carried to the next layer
      * while trimmed; once sealed, the last one in front of the terminator. */
     float hide_begin, hide_end;

@@ -172,6 +172,19 @@ void form_intervals(uint n)
     }
 }
 
+// resolve.c's region_meets: trim i's region has fragments on both sides of
+// [lo, hi] or one inside it.
+bool region_meets(uint n, uint i, float lo, float hi)
+{
+    float d = ent[i].depth;
+    if (d >= lo && d <= hi)
+        return true;
+    for (uint j = 0u; j < n; j++)
+        if (ent[j].kind == TV_ENTRY_TRIM && ent[j].id == ent[i].id && (d < lo ? ent[j].depth >= lo : ent[j].depth <= hi))
+            return true;
+    return false;
+}
+
 void validate(uint n)
 {
     for (uint v = 0u; v < iv_count; v++) {
@@ -184,7 +197,7 @@ void validate(uint n)
             bool crack = ent[i].kind == TV_ENTRY_TRIM && ent[i].id != TV_ID_PRIOR && (ent[i].id & TV_REGION_CRACK) != 0u;
             if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
                 iv_cracked[v] = true;
-            if (lost_here || ent[i].kind != TV_ENTRY_TRIM || ent[i].depth < lo || ent[i].depth > hi)
+            if (lost_here || ent[i].kind != TV_ENTRY_TRIM || !region_meets(n, i, lo, hi))
                 continue;
             float u = hi;
             if (!umbra_depth(ent[i].id, u) || u < hi)
@@ -308,21 +321,21 @@ bool carry_run(uint n)
 {
     seq_entry next[TV_K_CARRY];
     uint c = 0u;
-    // resolve.c's stand-in for lost trims, kept in depth order
-    bool stand_in = iv_run >= 0 && trims_lost < kdepth(0x7F800000u);
-    seq_entry standin = make_entry(stand_in ? max(ent[iv_run].depth, trims_lost) : 0.0, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
-    for (uint i = iv_run < 0 ? n : uint(iv_run); i <= n; i++) {
-        if (stand_in && (i == n || entry_less(standin, ent[i]))) {
-            if (c == TV_K_CARRY)
-                return false;
-            next[c++] = standin;
-            stand_in = false;
-        }
-        if (i == n || is_candidate_back(ent[i]))
+    uint run = iv_run < 0 ? n : uint(iv_run);
+    for (uint i = run; i < n; i++) {
+        if (is_candidate_back(ent[i]))
             continue;
         if (c == TV_K_CARRY)
             return false;
-        next[c++] = ent[i];
+        next[c] = ent[i];
+        if (ent[i].kind == TV_ENTRY_TRIM && region_meets(run + 1u, i, ent[run].depth, ent[run].depth))
+            next[c].depth = ent[run].depth; // resolve.c: its fragments in front of the run are not carried
+        c++;
+    }
+    if (iv_run >= 0 && trims_lost < kdepth(0x7F800000u)) { // resolve.c's stand-in for lost trims
+        if (c == TV_K_CARRY)
+            return false;
+        next[c++] = make_entry(max(ent[run].depth, trims_lost), TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
     }
     uint run_entries = c;
     for (uint i = 0u; i < run_entries; i++) {

@@ -184,6 +184,31 @@ static void test_cracked_interval(void)
     CHECK_OUT(r, 1);
 }
 
+/* A trim region drawn at two depths that straddle a thin solid's interval
+ * (P1 draws a trim quad at its solid's near plane, midpoint and far plane)
+ * validates it: the solid lies between those depths. A single trim
+ * outside the interval does not. Carried: the region's fragment in front of
+ * the run's first front is not carried, so the one behind it moves to that
+ * front. */
+static void test_trim_region_straddles_interval(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, T(0.9f, 5), F(1.0f, 1), B(1.2f), T(1.5f, 5), U(3.0f, 5), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 1, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 4.0f);
+    pvs_pixel_state one = {0};
+    r = RUN(one, T(0.9f, 5), F(1.0f, 1), B(1.2f), T(1.5f, 6), U(3.0f, 5), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 1);
+    TV_CHECK(one.stencil == TV_STENCIL_SEALED && one.term_depth == 1.0f);
+    pvs_pixel_state c = {0};
+    r = RUN(c, T(0.9f, 5), F(1.0f, 1), T(1.5f, 5), U(3.0f, 5));
+    CHECK_NONE(r);
+    TV_CHECK(c.stencil == TV_STENCIL_TRIMMED && c.carry_count == 3);
+    TV_CHECK(c.carry[1].kind == TV_ENTRY_TRIM && c.carry[1].id == 5 && c.carry[1].depth == 1.0f);
+    r = RUN(c, B(1.2f), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 1, 3);
+}
+
 /* R2: two validated intervals, the second inside the first's umbra; f3
  * (inside u2, unfinished) carried; in layer i+1 b3 terminates. */
 static void test_figure9_r2(void)
@@ -604,6 +629,7 @@ int main(void)
     TV_TEST_RUN(test_candidate_fronts);
     TV_TEST_RUN(test_candidate_backs);
     TV_TEST_RUN(test_figure9_r1);
+    TV_TEST_RUN(test_trim_region_straddles_interval);
     TV_TEST_RUN(test_figure9_r2);
     TV_TEST_RUN(test_cracked_interval);
     TV_TEST_RUN(test_figure9_r3);
