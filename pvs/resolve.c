@@ -374,8 +374,22 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
                 emit(out, n_out, e->id);
             continue;
         }
-        if (!is_face || prefix > 0)
-            continue; /* trims, range markers, and faces hidden by an umbra */
+        if (!is_face)
+            continue; /* trims and range markers */
+        if (prefix > 0) {
+            /* Hidden by an umbra. The front of an unvalidated interval is
+             * still an uneroded surface at this pixel: it hides everything
+             * behind it from the whole viewcell, as a terminator outside
+             * the range does, and seals the pixel unseen (the range kept
+             * is the one it lies in). A lone back does not: its front may
+             * have joined a validated run. */
+            if (e->kind == TV_ENTRY_BACK || e->interval < 0)
+                continue;
+            *term = e->depth;
+            s->hide_begin = open;
+            s->hide_end = e->depth;
+            return true;
+        }
         if (e->kind == TV_ENTRY_FRONT && e->interval < 0)
             return false; /* the unfinished trailing run: carried, not a terminator */
         /* A lone back (no front before it: a single-sided surface seen from

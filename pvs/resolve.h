@@ -16,14 +16,16 @@
  *
  * Rules (docs/trim-regions.md has examples): sort by (depth, kind, id);
  * greedy intervals [f, b] over fronts and backs, extended at the front over
- * consecutive fronts; an interval is validated by a trim fragment t with
- * f <= t <= b; its back is replaced by the nearest umbra of the validating
- * regions (never nearer than b); +1 at validated fronts, -1 at those umbrae,
- * prefix sum > 0 hides an entry. Walking front to back, the fronts of every
- * validated interval are output unless its first front is hidden; the first
- * visible front or back outside a validated interval is the terminator (a
- * front terminator is output, and so is a lone back: a single-sided surface
- * seen from behind, which the renderer draws) and seals the pixel; a
+ * consecutive fronts; an interval is validated by a trim region with a
+ * fragment t, f <= t <= b, or fragments on both sides of [f, b]; its back is
+ * replaced by the nearest umbra of the validating regions (never nearer than
+ * b); +1 at validated fronts, -1 at those umbrae, prefix sum > 0 hides an
+ * entry. Walking front to back, the fronts of every validated interval are
+ * output unless its first front is hidden; the first front or back outside
+ * a validated interval is the terminator (a visible front terminator is
+ * output, and so is a visible lone back: a single-sided surface seen from
+ * behind, which the renderer draws; a hidden front terminates unseen, being
+ * uneroded; a hidden lone back is skipped) and seals the pixel; a
  * trailing run of fronts without a back is carried, not a terminator. The
  * back of an interval that a crack edge's trim (TV_REGION_CRACK) lies in,
  * or up to TV_PVS_CRACK_SLACK_M in front of, is output with its first

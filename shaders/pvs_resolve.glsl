@@ -266,8 +266,16 @@ bool walk(uint m)
                 output_id(e.id);
             continue;
         }
-        if (!is_face || prefix > 0)
+        if (!is_face)
             continue;
+        if (prefix > 0) { // hidden; an unvalidated interval's front still seals (resolve.c)
+            if (e.kind == TV_ENTRY_BACK || e.interval < 0)
+                continue;
+            term_depth = e.depth;
+            hide_begin = open;
+            hide_end = e.depth;
+            return true;
+        }
         if (e.kind == TV_ENTRY_FRONT && e.interval < 0)
             return false;
         // A lone back (no front before it: a single-sided surface seen from

@@ -503,6 +503,21 @@ static void test_umbra_inside_umbra(void)
     check_configuration(&f, "umbra inside an umbra", 0.1f, FN_SIMPLE, hidden, 2, NULL, 0);
 }
 
+/* A wall right behind a smaller one, inside the umbra of its edges: at the
+ * pixels where the small wall's trim region meets its edge, the large wall
+ * is hidden but uneroded, so it still hides the box behind both from the
+ * whole viewcell. Until 2026-11-24 a face inside a hidden range was skipped
+ * and the box, seen past the end of the umbra, was output. */
+static void test_uneroded_wall_in_an_umbra(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -1.0f, -1.0f, -5.02f, 1.0f, 1.0f, -5.0f, m);
+    add_box(&f.scene, -5.0f, -5.0f, -5.6f, 5.0f, 5.0f, -5.5f, m);
+    uint32_t hidden = add_box(&f.scene, 4.0f, -2.0f, -31.0f, 8.0f, 2.0f, -30.0f, m);
+    check_configuration(&f, "an uneroded wall inside an umbra", 0.1f, FN_SIMPLE, &hidden, 1, NULL, 0);
+}
+
 /* The same with leaves of at most 4 triangles: every occluder spans several
  * layers, so a pixel often becomes trimmed in a later layer than the one
  * holding its occluder's front face (the prior faces of resolve.h). */
@@ -887,6 +902,7 @@ int main(void)
     TV_TEST_RUN(test_thin_walls);
     TV_TEST_RUN(test_umbra_inside_umbra);
     TV_TEST_RUN(test_occluders_across_layers);
+    TV_TEST_RUN(test_uneroded_wall_in_an_umbra);
     TV_TEST_RUN(test_back_face_past_an_edge);
     TV_TEST_RUN(test_open_quad_past_a_slab_edge);
     TV_TEST_RUN(test_late_face_before_terminator);

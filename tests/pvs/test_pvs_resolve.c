@@ -136,22 +136,30 @@ static void test_candidate_backs(void)
     TV_CHECK(!pvs_kbuf_push(&k, TV_ENTRY_BACK, 99.0f, 200));
 }
 
-/* R1: f1 t1 b1 validated (u1 at 3) -> f1 out; f2 inside u1 ignored; b2
- * behind u1 is the terminator; f3 never reached. A later layer's faces
- * (a triangle is drawn in the layer of its earliest octree leaf, so a
- * nearer one can come after the terminator) are output in front of the
- * terminator, unless inside the hidden range kept at sealing (from b1 to
- * u1). */
+/* R1: f1 t1 b1 validated (u1 at 3) -> f1 out; f2 lies inside u1, but its
+ * interval [f2, b2] has no trim: an uneroded surface, it seals the pixel
+ * unseen (the paper lets b2, behind u1, terminate: the same output, but
+ * a later face between f2 and b2 would count as visible); f3 never
+ * reached. A later layer's faces (a triangle is drawn in the layer of its
+ * earliest octree leaf, so a nearer one can come after the terminator)
+ * are output in front of the terminator, unless inside the hidden range
+ * kept at sealing (from b1 to f2). With f2's interval validated (its own
+ * trim), b2 is the terminator as in the paper. */
 static void test_figure9_r1(void)
 {
     pvs_pixel_state s = {0};
     layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), B(4.0f), F(5.0f, 3), B(6.0f));
     CHECK_OUT(r, 1);
-    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 4.0f);
-    TV_CHECK(s.hide_begin == 1.5f && s.hide_end == 3.0f);
-    layer_result later = RUN(s, F(0.5f, 9), F(2.5f, 10), F(3.5f, 11), F(5.0f, 12), T(0.55f, 5));
-    CHECK_OUT(later, 9, 11);
-    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 4.0f);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 2.0f);
+    TV_CHECK(s.hide_begin == 1.5f && s.hide_end == 2.0f);
+    layer_result later = RUN(s, F(0.5f, 9), F(1.8f, 10), F(3.5f, 11), F(5.0f, 12), T(0.55f, 5));
+    CHECK_OUT(later, 9);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 2.0f);
+    pvs_pixel_state v = {0};
+    r = RUN(v, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), T(2.5f, 2), BI(4.0f, 7), F(5.0f, 3), B(6.0f));
+    CHECK_OUT(r, 1, 3);
+    TV_CHECK(v.stencil == TV_STENCIL_SEALED && v.term_depth == 5.0f); /* f2's range ends at b2: f3 seals */
+    TV_CHECK(v.hide_begin == 1.5f && v.hide_end == 4.0f);
 }
 
 /* A pillar with a crack in its front surface: the interval validated by
@@ -226,7 +234,9 @@ static void test_figure9_r2(void)
 }
 
 /* R3: like R2 but f3 lies behind u2: carried, validated in layer i+1 by t3,
- * output there; f4 inside u3 ignored; f5 behind u3 terminates. */
+ * output there; f4 lies inside u3 with an unvalidated interval: it seals
+ * the pixel unseen, and f5 behind it is hidden (the paper ignores f4 and
+ * lets f5 terminate). With f4 validated (t4), f5 terminates and is output. */
 static void test_figure9_r3(void)
 {
     pvs_pixel_state s = {0};
@@ -234,21 +244,31 @@ static void test_figure9_r3(void)
                          U(4.0f, 2), F(4.5f, 3));
     CHECK_OUT(r, 1);
     TV_CHECK(s.carry_count == 1 && s.hide_begin >= s.hide_end);
+    pvs_pixel_state s2 = s;
     layer_result r2 = RUN(s, T(5.0f, 3), B(5.5f), U(8.0f, 3), F(7.0f, 4), B(7.5f), F(9.0f, 5), B(10.0f));
+    CHECK_OUT(r2, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 7.0f);
+    r2 = RUN(s2, T(5.0f, 3), B(5.5f), U(8.0f, 3), F(7.0f, 4), T(7.2f, 4), B(7.5f), F(9.0f, 5), B(10.0f));
     CHECK_OUT(r2, 3, 5);
-    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    TV_CHECK(s2.stencil == TV_STENCIL_SEALED && s2.term_depth == 9.0f);
 }
 
 /* Figure 5 left: the occludee's trim region lies inside the occluder's
  * umbra: the occludee (and what its umbra covers) is not output; the first
- * untrimmed object behind the outer umbra terminates. */
+ * untrimmed object behind the outer umbra terminates. An untrimmed object
+ * inside the umbra (f3) hides what lies behind it unseen. */
 static void test_figure5_umbra_inside_umbra(void)
 {
     pvs_pixel_state s = {0};
     layer_result r = RUN(s, F(1.0f, 1), T(1.1f, 1), B(1.5f), U(10.0f, 1), F(3.0f, 2), T(3.2f, 2), B(3.5f),
-                         U(6.0f, 2), F(8.0f, 3), B(9.0f), F(11.0f, 4), B(12.0f));
+                         U(6.0f, 2), F(11.0f, 4), B(12.0f));
     CHECK_OUT(r, 1, 4);
-    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 11.0f);
+    pvs_pixel_state t = {0};
+    r = RUN(t, F(1.0f, 1), T(1.1f, 1), B(1.5f), U(10.0f, 1), F(3.0f, 2), T(3.2f, 2), B(3.5f), U(6.0f, 2),
+            F(8.0f, 3), B(9.0f), F(11.0f, 4), B(12.0f));
+    CHECK_OUT(r, 1);
+    TV_CHECK(t.stencil == TV_STENCIL_SEALED && t.term_depth == 8.0f);
 }
 
 /* Figure 5 middle: the occludee's trim region is outside the umbra: both
@@ -257,7 +277,7 @@ static void test_figure5_disjoint_umbrae(void)
 {
     pvs_pixel_state s = {0};
     layer_result r = RUN(s, F(1.0f, 1), T(1.1f, 1), B(1.5f), U(4.0f, 1), F(5.0f, 2), T(5.2f, 2), B(5.5f),
-                         U(8.0f, 2), F(7.0f, 3), B(7.5f));
+                         U(8.0f, 2), F(7.0f, 3), T(7.2f, 3), B(7.5f));
     CHECK_OUT(r, 1, 2);
     TV_CHECK(s.stencil == TV_STENCIL_TRIMMED);
 }
@@ -303,7 +323,7 @@ static void test_carry_trim_and_umbra(void)
     layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 4), U(6.0f, 4));
     CHECK_NONE(r);
     TV_CHECK(s.carry_count == 3);
-    layer_result r2 = RUN(s, B(1.5f), F(3.0f, 2), B(3.5f), F(7.0f, 3), B(8.0f));
+    layer_result r2 = RUN(s, B(1.5f), F(3.0f, 2), T(3.2f, 5), B(3.5f), F(7.0f, 3), B(8.0f));
     CHECK_OUT(r2, 1, 3); /* f2 lies in the carried umbra, f3 terminates */
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
 }
@@ -424,8 +444,8 @@ static void test_overflow_umbra_list(void)
     TV_CHECK(r.overflowed);
     CHECK_OUT(r, 1);
     TV_CHECK(s.stencil == TV_STENCIL_TRIMMED && s.hide_begin == 1.0f && s.hide_end == 5.0f);
-    layer_result r2 = RUN(s, F(4.0f, 2), B(4.5f), F(6.0f, 3), B(6.5f));
-    CHECK_OUT(r2, 3); /* 2 inside region 0's umbra, 3 the terminator */
+    layer_result r2 = RUN(s, F(4.0f, 2), T(4.2f, 9), B(4.5f), F(6.0f, 3), B(6.5f));
+    CHECK_OUT(r2, 3); /* 2 (eroded) inside region 0's umbra, 3 the terminator */
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
 }
 
@@ -507,18 +527,20 @@ static void test_overflow_back_list(void)
 
 /* Prior faces: the pixel's nearest faces from earlier layers (P2's centre
  * depths) enter the sequence when it becomes trimmed, never output. Here an
- * occluder [1, 2] drawn in an earlier layer gets its trim and umbra only now
- * (an object spanning layers): it hides F2 and lets F3 through, where
- * without it F2 would have been taken for the terminator and F3 lost. */
+ * occluder whose front (at 1) was drawn in an earlier layer gets its back,
+ * trim and umbra only now (an object spanning layers): it hides the small
+ * eroded object 2 and lets F3 through, where without it the occluder's back
+ * would have been taken for the terminator and F3 lost. */
 static void test_prior_faces(void)
 {
     pvs_pixel_state s = {0};
-    layer_result r = RUN_PRIOR(s, 1.0f, 2.0f, T(1.5f, 1), U(3.0f, 1), F(2.5f, 2), F(4.0f, 3), B(4.5f));
+    layer_result r = RUN_PRIOR(s, 1.0f, 2.0f, T(1.5f, 1), B(2.0f), U(3.0f, 1), F(2.5f, 2), T(2.6f, 2), B(2.7f),
+                               U(2.8f, 2), F(4.0f, 3), B(4.5f));
     CHECK_OUT(r, 3);
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
     pvs_pixel_state t = {0};
-    r = RUN(t, T(1.5f, 1), U(3.0f, 1), F(2.5f, 2), F(4.0f, 3), B(4.5f));
-    CHECK_OUT(r, 2); /* what the resolve did without prior faces */
+    r = RUN(t, T(1.5f, 1), B(2.0f), U(3.0f, 1), F(2.5f, 2), T(2.6f, 2), B(2.7f), U(2.8f, 2), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, BACK_ID); /* what the resolve did without prior faces */
     /* an untrimmed solid in front of a newly trimmed one seals at once */
     pvs_pixel_state u = {0};
     r = RUN_PRIOR(u, 1.0f, 1.5f, F(5.0f, 5), T(5.2f, 2), B(5.5f), U(9.0f, 2), F(10.0f, 6));
