@@ -249,18 +249,42 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
     }
 }
 
-/* Whether trim seq[i]'s region meets the depth range [lo, hi] at this pixel:
- * one of its fragments lies in it, or it has fragments on both sides. P1
- * draws a trim quad up to three times, at its solid's near plane, at the
- * midpoint and (grazing fronts) at the far plane; a thin solid's interval
- * can fall between two of those depths, and the solid lies between them. */
-static bool region_meets(const seq_entry* seq, uint32_t n, uint32_t i, float lo, float hi)
+/* Whether trim seq[i]'s region meets the depth range [lo, hi] at this pixel.
+ * P1 draws a trim quad up to three times: at the midpoint of its solid's two
+ * planes, at the nearer and (grazing fronts only) at the farther one, those
+ * two moved TV_PVS_TRIM_NUDGE towards the other. The solid lies between the
+ * planes, so the region meets a range its fragments overlap or straddle (a
+ * thin solid's interval can fall between two draws), and a range that
+ * starts on its farther plane: a face in that plane (found on oa:oa_dm5,
+ * docs/trim-regions.md) lies behind every draw. With two draws that plane
+ * is twice the midpoint less the nearer.
+ * When trims were lost, only fragments in front of the nearest lost one
+ * count (all of those found room): which ones behind it did depends on
+ * arrival order, and the PVS must not. */
+static bool region_meets(const seq_entry* seq, uint32_t n, uint32_t i, float lo, float hi, float trims_lost)
 {
-    float d = seq[i].depth;
-    if (d >= lo && d <= hi)
-        return true;
+    float mn = INFINITY, mx = -INFINITY;
+    uint32_t count = 0;
     for (uint32_t j = 0; j < n; j++) {
-        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == seq[i].id && (d < lo ? seq[j].depth >= lo : seq[j].depth <= hi))
+        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == seq[i].id && seq[j].depth < trims_lost) {
+            mn = fminf(mn, seq[j].depth);
+            mx = fmaxf(mx, seq[j].depth);
+            count++;
+        }
+    }
+    if (count == 0)
+        return false;
+    if (mn <= hi && mx >= lo)
+        return true;
+    float far = count == 2 ? 2.0f * mx - mn : mx;
+    return count > 1 && fabsf(lo - far) <= 4.0f * TV_PVS_TRIM_NUDGE * far;
+}
+
+/* Whether trim region `id` has a fragment among seq[0, n). */
+static bool region_in(const seq_entry* seq, uint32_t n, uint32_t id)
+{
+    for (uint32_t j = 0; j < n; j++) {
+        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == id)
             return true;
     }
     return false;
@@ -282,12 +306,14 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
         iv->cracked[v] = false;
         iv->end[v] = hi;
         for (uint32_t i = 0; i < n; i++) {
+            if (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth >= iv->trims_lost)
+                continue; /* found room by arrival order (region_meets) */
             /* a crack trim lies in its edge's plane, and the face seen
              * beside the crack may be a neighbour a few mm behind it */
             bool crack = seq[i].kind == TV_ENTRY_TRIM && seq[i].id != TV_ID_PRIOR && (seq[i].id & TV_REGION_CRACK) != 0;
             if (crack && seq[i].depth >= lo - TV_PVS_CRACK_SLACK_M && seq[i].depth <= hi)
                 iv->cracked[v] = true;
-            if (lost || seq[i].kind != TV_ENTRY_TRIM || !region_meets(seq, n, i, lo, hi))
+            if (lost || seq[i].kind != TV_ENTRY_TRIM || !region_meets(seq, n, i, lo, hi, iv->trims_lost))
                 continue;
             float u = hi;
             if (!umbra_depth(s, k, seq[i].id, &u) || u < hi)
@@ -453,7 +479,8 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
     uint32_t c = 0;
     uint32_t run = iv->run < 0 ? n : (uint32_t)iv->run;
     for (uint32_t i = run; i < n; i++) {
-        if (is_candidate_back(&seq[i]))
+        /* trims behind the nearest lost one: the stand-in below covers them */
+        if (is_candidate_back(&seq[i]) || (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth >= iv->trims_lost))
             continue;
         if (c == TV_K_CARRY)
             return false;
@@ -461,17 +488,17 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
         /* A region with fragments in front of the run's first front too
          * meets any interval the run will form (region_meets): carried at
          * that front, as those fragments are not. */
-        if (seq[i].kind == TV_ENTRY_TRIM && region_meets(seq, run + 1, i, seq[run].depth, seq[run].depth))
+        if (seq[i].kind == TV_ENTRY_TRIM && region_in(seq, run, seq[i].id))
             next[c].depth = seq[run].depth;
         c++;
     }
-    /* The stand-in for lost trims: a lost trim validates the run once its
-     * back arrives if it lies behind the run's first front, and all of
-     * them lie at or behind trims_lost. */
+    /* The stand-in for lost trims, at the run's first front: a lost trim,
+     * or a lost fragment of a region with one in front of the run, may
+     * validate the run once its back arrives. */
     if (iv->run >= 0 && iv->trims_lost < INFINITY) {
         if (c == TV_K_CARRY)
             return false;
-        next[c++] = (pvs_entry){fmaxf(seq[run].depth, iv->trims_lost), TV_ENTRY_TRIM, TV_ID_PRIOR};
+        next[c++] = (pvs_entry){seq[run].depth, TV_ENTRY_TRIM, TV_ID_PRIOR};
     }
     uint32_t run_entries = c;
     for (uint32_t i = 0; i < run_entries; i++) {

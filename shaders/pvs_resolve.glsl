@@ -172,15 +172,30 @@ void form_intervals(uint n)
     }
 }
 
-// resolve.c's region_meets: trim i's region has fragments on both sides of
-// [lo, hi] or one inside it.
+// resolve.c's region_meets: trim i's region overlaps or straddles [lo, hi],
+// or lo lies on its farther plane; only fragments in front of trims_lost.
 bool region_meets(uint n, uint i, float lo, float hi)
 {
-    float d = ent[i].depth;
-    if (d >= lo && d <= hi)
-        return true;
+    float inf = kdepth(0x7F800000u), mn = inf, mx = -inf;
+    uint count = 0u;
     for (uint j = 0u; j < n; j++)
-        if (ent[j].kind == TV_ENTRY_TRIM && ent[j].id == ent[i].id && (d < lo ? ent[j].depth >= lo : ent[j].depth <= hi))
+        if (ent[j].kind == TV_ENTRY_TRIM && ent[j].id == ent[i].id && ent[j].depth < trims_lost) {
+            mn = min(mn, ent[j].depth);
+            mx = max(mx, ent[j].depth);
+            count++;
+        }
+    if (count == 0u)
+        return false;
+    if (mn <= hi && mx >= lo)
+        return true;
+    float far = count == 2u ? 2.0 * mx - mn : mx;
+    return count > 1u && abs(lo - far) <= 4.0 * TV_PVS_TRIM_NUDGE * far;
+}
+
+bool region_in(uint n, uint id)
+{
+    for (uint j = 0u; j < n; j++)
+        if (ent[j].kind == TV_ENTRY_TRIM && ent[j].id == id)
             return true;
     return false;
 }
@@ -194,6 +209,8 @@ void validate(uint n)
         iv_cracked[v] = false;
         iv_end[v] = hi;
         for (uint i = 0u; i < n; i++) {
+            if (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth >= trims_lost)
+                continue; // found room by arrival order (resolve.c)
             bool crack = ent[i].kind == TV_ENTRY_TRIM && ent[i].id != TV_ID_PRIOR && (ent[i].id & TV_REGION_CRACK) != 0u;
             if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
                 iv_cracked[v] = true;
@@ -331,19 +348,19 @@ bool carry_run(uint n)
     uint c = 0u;
     uint run = iv_run < 0 ? n : uint(iv_run);
     for (uint i = run; i < n; i++) {
-        if (is_candidate_back(ent[i]))
+        if (is_candidate_back(ent[i]) || (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth >= trims_lost))
             continue;
         if (c == TV_K_CARRY)
             return false;
         next[c] = ent[i];
-        if (ent[i].kind == TV_ENTRY_TRIM && region_meets(run + 1u, i, ent[run].depth, ent[run].depth))
+        if (ent[i].kind == TV_ENTRY_TRIM && region_in(run, ent[i].id))
             next[c].depth = ent[run].depth; // resolve.c: its fragments in front of the run are not carried
         c++;
     }
     if (iv_run >= 0 && trims_lost < kdepth(0x7F800000u)) { // resolve.c's stand-in for lost trims
         if (c == TV_K_CARRY)
             return false;
-        next[c++] = make_entry(max(ent[run].depth, trims_lost), TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
+        next[c++] = make_entry(ent[run].depth, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
     }
     uint run_entries = c;
     for (uint i = 0u; i < run_entries; i++) {

@@ -197,7 +197,7 @@ static void test_cracked_interval(void)
  * validates it: the solid lies between those depths. A single trim
  * outside the interval does not. Carried: the region's fragment in front of
  * the run's first front is not carried, so the one behind it moves to that
- * front. */
+ * front. An interval starting on the region's farther plane is met. */
 static void test_trim_region_straddles_interval(void)
 {
     pvs_pixel_state s = {0};
@@ -215,6 +215,19 @@ static void test_trim_region_straddles_interval(void)
     TV_CHECK(c.carry[1].kind == TV_ENTRY_TRIM && c.carry[1].id == 5 && c.carry[1].depth == 1.0f);
     r = RUN(c, B(1.2f), F(4.0f, 3), B(4.5f));
     CHECK_OUT(r, 1, 3);
+    /* Two draws (nearer plane 1.0, midpoint 1.05): the undrawn farther
+     * plane is at 1.1, and an interval whose front lies on it (a face in
+     * that plane) is met; one starting 1 % behind it, or a single draw, is
+     * not. */
+    pvs_pixel_state far = {0};
+    r = RUN(far, T(1.0f, 5), T(1.05f, 5), F(1.1f, 1), B(1.5f), U(3.0f, 5), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 1, 3);
+    pvs_pixel_state beyond = {0};
+    r = RUN(beyond, T(1.0f, 5), T(1.05f, 5), F(1.111f, 1), B(1.5f), U(3.0f, 5), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 1);
+    pvs_pixel_state single = {0};
+    r = RUN(single, T(1.0999f, 5), F(1.1f, 1), B(1.5f), U(3.0f, 5), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 1);
 }
 
 /* R2: two validated intervals, the second inside the first's umbra; f3
@@ -454,8 +467,7 @@ static void test_overflow_umbra_list(void)
  * lost at 0.5 F1, F2, F3 are output and the pixel stays open; a carried run
  * gets a stand-in trim that validates it in the next layer. Trims lost
  * behind an interval cannot have validated it (the sequence is complete in
- * front of them), and the stand-in lies at the nearest lost trim when that
- * is behind the run's front. */
+ * front of them). */
 static void test_overflow_trim_list(void)
 {
     item items[TV_K_TRIM + 8];
@@ -485,21 +497,31 @@ static void test_overflow_trim_list(void)
     r = run_layer(&near, items, n);
     CHECK_OUT(r, 1); /* [1, 1.5] lies in front of every lost trim: F1 terminates */
     TV_CHECK(r.overflowed && near.stencil == TV_STENCIL_SEALED && near.term_depth == 1.0f);
+    /* Which trims behind the nearest lost one found room depends on arrival
+     * order, so they count for nothing: region 7's fragment at 9 (stored)
+     * does not make it straddle [1, 1.5]. The carried F3 gets the stand-in
+     * at its own depth, and the stored trims behind the lost one are not
+     * carried. */
     n = 0;
-    for (uint32_t i = 0; i < TV_K_TRIM; i++)
-        items[n++] = (item)T(0.5f, i);
+    items[n++] = (item)T(0.5f, 7);
+    items[n++] = (item)T(9.0f, 7);
+    for (uint32_t i = 2; i < TV_K_TRIM; i++)
+        items[n++] = (item)T(0.2f, 100 + i);
     items[n++] = (item)T(5.0f, 99); /* lost */
     items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)F(3.0f, 3);
     pvs_pixel_state run = {0};
     r = run_layer(&run, items, n);
-    TV_CHECK(r.overflowed && run.stencil == TV_STENCIL_TRIMMED && run.carry_count == 2);
-    TV_CHECK(run.carry[1].kind == TV_ENTRY_TRIM && run.carry[1].id == TV_ID_PRIOR && run.carry[1].depth == 5.0f);
-    pvs_pixel_state run2 = run;
-    r2 = RUN(run, B(4.5f), F(6.0f, 6), B(6.5f));
-    CHECK_OUT(r2, 1); /* [1, 4.5] not validated by a trim lost at 5: F1 terminates */
-    TV_CHECK(run.stencil == TV_STENCIL_SEALED && run.term_depth == 1.0f);
-    r2 = RUN(run2, B(5.5f), F(6.0f, 6), B(6.5f));
-    CHECK_OUT(r2, 1, 6); /* [1, 5.5] may have been: F1 output, F6 terminates */
+    CHECK_OUT(r, 1);
+    TV_CHECK(r.overflowed && run.stencil == TV_STENCIL_SEALED && run.term_depth == 1.0f);
+    n -= 3;
+    items[n++] = (item)F(3.0f, 3);
+    pvs_pixel_state open = {0};
+    r = run_layer(&open, items, n);
+    CHECK_NONE(r);
+    TV_CHECK(open.stencil == TV_STENCIL_TRIMMED && open.carry_count == 2);
+    TV_CHECK(open.carry[1].kind == TV_ENTRY_TRIM && open.carry[1].id == TV_ID_PRIOR && open.carry[1].depth == 3.0f);
 }
 
 /* A lost back merges two intervals: [F1, B1.5] (valid, umbra 1.8) and
