@@ -57,9 +57,10 @@
  *   interval whose back lies at or behind it may have been validated by a
  *   lost trim, whose umbra may have been the nearest: it counts as valid and
  *   hides up to its back only. Intervals in front of it are complete and
- *   resolve as usual. A carried run gets a trim without umbra (region
- *   TV_ID_PRIOR) at its first front or trim_lost, whichever is farther,
- *   which does the same when its back arrives.
+ *   resolve as usual; the trims behind it that found room (an accident of
+ *   arrival order) count for nothing. A carried run gets a trim without
+ *   umbra (region TV_ID_PRIOR) at its first front, which validates it when
+ *   its back arrives.
  * - backs: nothing to do. A lost back merges two intervals into one (valid
  *   when either was, hiding no further than the later back) or leaves a run
  *   open; it never creates a terminator: only more output.
