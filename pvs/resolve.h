@@ -25,7 +25,8 @@
  * a validated interval is the terminator (a visible front terminator is
  * output, and so is a visible lone back: a single-sided surface seen from
  * behind, which the renderer draws; a hidden front terminates unseen, being
- * uneroded; a hidden lone back is skipped) and seals the pixel; a
+ * uneroded; a hidden lone back is skipped, and a lone back that a trim
+ * region meets is output without terminating) and seals the pixel; a
  * trailing run of fronts without a back is carried, not a terminator. The
  * back of an interval that a crack edge's trim (TV_REGION_CRACK) lies in,
  * or up to TV_PVS_CRACK_SLACK_M in front of, is output with its first

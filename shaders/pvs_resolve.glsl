@@ -225,6 +225,19 @@ void validate(uint n)
     }
 }
 
+#define LONE_ERODED (-2) // resolve.c
+
+bool lone_eroded(uint n, uint b)
+{
+    float d = ent[b].depth;
+    if (d >= trims_lost)
+        return true;
+    for (uint i = 0u; i < n; i++)
+        if (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth < trims_lost && region_meets(n, i, d, d))
+            return true;
+    return false;
+}
+
 uint replace_backs(uint n)
 {
     uint m = 0u;
@@ -234,7 +247,10 @@ uint replace_backs(uint n)
         if (valid && ent[i].kind == TV_ENTRY_BACK)
             continue;
         ent[S2 + m] = ent[i];
-        ent[S2 + m++].delta = valid && iv_first[v] == i ? 1 : 0;
+        ent[S2 + m].delta = valid && iv_first[v] == i ? 1 : 0;
+        if (v < 0 && ent[i].kind == TV_ENTRY_BACK && !is_candidate(ent[i]) && lone_eroded(n, i))
+            ent[S2 + m].interval = LONE_ERODED;
+        m++;
     }
     for (uint v = 0u; v < iv_count; v++) {
         if (iv_valid[v]) {
@@ -295,6 +311,10 @@ bool walk(uint m)
         }
         if (e.kind == TV_ENTRY_FRONT && e.interval < 0)
             return false;
+        if (e.interval == LONE_ERODED) { // resolve.c: visible, not a terminator
+            output_id(e.id);
+            continue;
+        }
         // A lone back (no front before it: a single-sided surface seen from
         // behind) is visible, as the renderer culls no faces; the back of a
         // run whose front lies in an umbra is hidden by that front.

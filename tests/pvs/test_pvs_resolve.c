@@ -343,7 +343,8 @@ static void test_carry_trim_and_umbra(void)
 
 /* A single-sided surface seen from behind past an occluder's edge: its back
  * face is the terminator and is output (the renderer draws back faces);
- * the back of a box whose front lies in the umbra is not. */
+ * the back of a box whose front lies in the umbra is not; an eroded lone
+ * back is output without terminating. */
 static void test_lone_back_output(void)
 {
     pvs_pixel_state s = {0};
@@ -354,6 +355,13 @@ static void test_lone_back_output(void)
     r = RUN(t, F(1.0f, 1), T(1.2f, 7), B(1.5f), U(3.0f, 7), F(2.5f, 2), BI(4.0f, 43));
     CHECK_OUT(r, 1);
     TV_CHECK(t.stencil == TV_STENCIL_SEALED);
+    /* A lone back that a trim region meets (here it lies on the farther
+     * plane of a region drawn at its nearer plane 0.8 and midpoint 0.9):
+     * eroded, eyes see past it. Output, and not the terminator. */
+    pvs_pixel_state e = {0};
+    r = RUN(e, T(0.8f, 5), T(0.9f, 5), BI(1.0f, 44), F(3.0f, 3), B(3.5f));
+    CHECK_OUT(r, 44, 3);
+    TV_CHECK(e.stencil == TV_STENCIL_SEALED && e.term_depth == 3.0f);
 }
 
 /* Without any trim fragment an untrimmed pixel is the visibility buffer's;
