@@ -1,24 +1,26 @@
 #!/bin/sh
 # The quality bar for trim regions on real scenes, where it is met
-# (docs/results.md, "Where trim regions stand"): at delta = 10 cm, in every
+# (docs/results.md, "Where trim regions stand"): at delta = 10 cm (or the
+# given delta), in every
 # sampled viewcell (the two largest open-floor points of each level, 50
 # sample views of 320x180 each, as `trimvr bench`) FN pixels at most 0.005 %
 # of a view on average and PSNR >= 50 dB (of the viewcell's mean squared
 # error over its views). The lowest PSNR of a single view is printed too.
 #
-#   shared_quality.sh TRIMVR OUT_DIR SCENE,SCENE..
+#   shared_quality.sh TRIMVR OUT_DIR SCENE,SCENE.. [DELTA_M]
 # Skipped (77) without ../shared ($TRIMVR_SHARED).
 set -u
 trimvr=$1
 out=$2
 scenes=$3
+delta=${4:-0.1}
 shared=${TRIMVR_SHARED:-../shared}
 if [ ! -d "$shared/scenes/openarena" ]; then
     echo "skip: $shared/scenes/openarena absent (../shared not available)"
     exit 77
 fi
 rm -rf "$out"
-if ! "$trimvr" bench --scenes "$scenes" --deltas 0.1 --methods tr --max-cells 2 --out "$out" >"$out.log" 2>&1; then
+if ! "$trimvr" bench --scenes "$scenes" --deltas "$delta" --methods tr --max-cells 2 --out "$out" >"$out.log" 2>&1; then
     echo "FAIL: trimvr bench --scenes $scenes exited non-zero"
     tail -n 5 "$out.log"
     exit 1
