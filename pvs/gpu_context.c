@@ -117,7 +117,7 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_ACTIVE, pixels * 4},
         {TV_PVS_BIND_ACTIVE_LIST, pixels * 4},
         {TV_PVS_BIND_TRI_FLAGS, tris * 4},
-        {TV_PVS_BIND_CENTRE_DEPTH, pixels * 8},
+        {TV_PVS_BIND_CENTRE_DEPTH, pixels * 4 * TV_PVS_CENTRE_STRIDE},
         {TV_PVS_BIND_LOST, pixels * TV_PVS_LOST_STRIDE * 4},
         {TV_PVS_BIND_COOP_LIST, pixels * 4},
     };
@@ -216,9 +216,9 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     pvs_desc d = desc ? *desc : (pvs_desc){0};
     if (!check_desc(&d, err, err_size))
         return NULL;
-    if (scene->triangle_count >= TV_ID_CANDIDATE) {
+    if (scene->triangle_count >= TV_ID_CULLED) { /* the id flags sit above the ids */
         snprintf(err, err_size, "pvs: %s has %u triangles, the PVS handles fewer than %u", scene->name,
-                 scene->triangle_count, TV_ID_CANDIDATE);
+                 scene->triangle_count, TV_ID_CULLED);
         return NULL;
     }
     if (rnd_scene_triangle_count(gpu) != scene->triangle_count) {

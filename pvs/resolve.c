@@ -5,7 +5,7 @@
 
 /* Upper bounds of the per-pixel sequences (thread-local arrays on the GPU). */
 #define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
-#define IV_MAX (TV_K_BACK + 1 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 1 : TV_K_FRONT + TV_K_CARRY) // + a prior back
+#define IV_MAX (TV_K_BACK + 2 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 2 : TV_K_FRONT + TV_K_CARRY) // + two prior backs
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
 typedef struct seq_entry {
@@ -129,11 +129,17 @@ static bool is_candidate_back(const seq_entry* e)
     return e->kind == TV_ENTRY_BACK && is_candidate(e);
 }
 
-/* Appends a front's triangle to the output; prior faces are already in the
- * PVS through the visibility buffer. */
+/* A back the renderer culls from the whole viewcell (TV_ID_CULLED). */
+static bool is_culled(const seq_entry* e)
+{
+    return e->kind == TV_ENTRY_BACK && e->id != TV_ID_PRIOR && (e->id & TV_ID_CULLED) != 0;
+}
+
+/* Appends a face's triangle to the output; prior faces are already in the
+ * PVS through the visibility buffer, and culled backs are never drawn. */
 static void emit(uint32_t* out, uint32_t* n, uint32_t id)
 {
-    if (id != TV_ID_PRIOR)
+    if (id != TV_ID_PRIOR && (id & TV_ID_CULLED) == 0)
         out[(*n)++] = id & ~TV_ID_CANDIDATE;
 }
 
@@ -194,8 +200,8 @@ static bool stored_face(const pvs_kbuf* k, uint32_t kind, float depth)
     return false;
 }
 
-/* `first`: the pixel becomes trimmed in this layer, so its nearest front and
- * nearest back join as prior faces unless this layer holds them. */
+/* `first`: the pixel becomes trimmed in this layer, so its nearest front,
+ * back and culled back join as prior faces unless this layer holds them. */
 static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, bool first, seq_entry* seq)
 {
     uint32_t n = 0;
@@ -204,6 +210,8 @@ static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, bool first, 
             seq[n++] = make_entry(k->nearest_front, TV_ENTRY_FRONT, TV_ID_PRIOR, 0);
         if (has_depth(k->nearest_back) && !stored_face(k, TV_ENTRY_BACK, k->nearest_back))
             seq[n++] = make_entry(k->nearest_back, TV_ENTRY_BACK, TV_ID_PRIOR, 0);
+        if (has_depth(k->nearest_culled_back) && !stored_face(k, TV_ENTRY_BACK, k->nearest_culled_back))
+            seq[n++] = make_entry(k->nearest_culled_back, TV_ENTRY_BACK, TV_ID_PRIOR_CULLED, 0);
     }
     for (uint32_t i = 0; i < s->carry_count; i++) {
         if (s->carry[i].kind != TV_ENTRY_UMBRA)
@@ -324,6 +332,12 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
             iv->end[v] = iv->valid[v] && iv->end[v] < u ? iv->end[v] : u;
             iv->valid[v] = true;
         }
+        /* Through a crack the eyes see the inside, and with the back culled
+         * whatever lies behind it: the interval hides its inside only. */
+        if (iv->cracked[v] && is_culled(&seq[iv->back[v]])) {
+            iv->valid[v] = true;
+            iv->end[v] = hi;
+        }
     }
 }
 
@@ -415,7 +429,7 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
                 emit(out, n_out, e->id);
             continue;
         }
-        face_seen = face_seen || is_face;
+        face_seen = face_seen || (is_face && !is_culled(e));
         if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->valid[e->interval]) {
             /* Every front of a validated interval's run is visible from the
              * viewcell unless the run starts inside an earlier umbra. */
@@ -425,6 +439,8 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
         }
         if (!is_face)
             continue; /* trims and range markers */
+        if (e->interval < 0 && is_culled(e))
+            continue; /* a lone culled back: the eyes see through it, nothing else */
         if (prefix > 0) {
             /* Hidden by an umbra. The front of an unvalidated interval is
              * still an uneroded surface at this pixel: it hides everything
@@ -448,9 +464,10 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
             emit(out, n_out, e->id);
             continue;
         }
-        /* A lone back (no front before it: a single-sided surface seen from
-         * behind) is visible, as the renderer culls no faces; the back of a
-         * run whose front lies in an umbra is hidden by that front. */
+        /* A lone back (no front before it: a double-sided surface seen from
+         * behind, or a single-sided one whose plane the viewcell straddles)
+         * is visible; the back of a run whose front lies in an umbra is
+         * hidden by that front. */
         if (e->kind == TV_ENTRY_FRONT || e->interval < 0)
             emit(out, n_out, e->id);
         if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->cracked[e->interval])

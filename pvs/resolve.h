@@ -23,7 +23,7 @@
  * entry. Walking front to back, the fronts of every validated interval are
  * output unless its first front is hidden; the first front or back outside
  * a validated interval is the terminator (a visible front terminator is
- * output, and so is a visible lone back: a single-sided surface seen from
+ * output, and so is a visible lone back: a double-sided surface seen from
  * behind, which the renderer draws; a hidden front terminates unseen, being
  * uneroded; a hidden lone back is skipped, and a lone back that a trim
  * region meets is output without terminating) and seals the pixel; a
@@ -32,6 +32,13 @@
  * or up to TV_PVS_CRACK_SLACK_M in front of, is output with its first
  * front (validated and unhidden, or the terminator): the eyes see it
  * through the crack.
+ *
+ * Culled backs (back id | TV_ID_CULLED: the renderer culls the triangle
+ * from the whole viewcell, glTF's single-sided materials) close the interval
+ * their front opened and do nothing else: never output, and a lone one is
+ * skipped (neither visible nor an occluder). An interval with a crack and a
+ * culled back hides its inside only: through the crack the eyes see what
+ * lies behind it.
  *
  * Candidate fronts (front id | TV_ID_CANDIDATE: the triangle touches the
  * pixel without covering its centre) take no part in intervals and never
@@ -71,7 +78,8 @@
  *
  * Prior faces: when an untrimmed pixel becomes trimmed, its nearest face of
  * this and the earlier layers (kbuf nearest_front / nearest_back) enters the
- * sequence as a front and/or back with id TV_ID_PRIOR, which is never output.
+ * sequence as a front and/or back with id TV_ID_PRIOR, which is never output;
+ * its nearest culled back (nearest_culled_back) as TV_ID_PRIOR_CULLED.
  * Without it a trim arriving in a later layer than its occluder's face (a
  * triangle is drawn in its earliest layer only, and objects span layers)
  * would resolve as if that face were absent: everything behind it counted
@@ -107,6 +115,9 @@ typedef struct pvs_kbuf {
      * this and every earlier layer (P2's exact pass; 0 or INFINITY: none).
      * Read only when the pixel becomes trimmed (TV_ID_PRIOR). */
     float nearest_front, nearest_back;
+    /* The same for culled backs (TV_ID_CULLED), kept apart: they enter as
+     * TV_ID_PRIOR_CULLED, which closes an interval and does nothing else. */
+    float nearest_culled_back;
     /* Nearest depth of a front (not a candidate) that found the front list
      * full (0: none); pvs_kbuf_push keeps it, as P2's atomicMin does. */
     float front_lost;

@@ -96,9 +96,9 @@ bool rnd_raster_pipeline_create(rnd_context* ctx, const rnd_raster_desc* desc, V
     VkPipelineViewportStateCreateInfo viewport = {.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
                                                   .viewportCount = 1,
                                                   .scissorCount = 1};
-    /* No culling: the PVS treats both faces of every triangle, and renders
-     * from a PVS and of the full scene must stay comparable pixel for pixel.
-     * With the projection's Y flip, counter-clockwise world triangles stay
+    /* No fixed-function culling: one draw mixes single- and double-sided
+     * materials, so mesh.frag culls single-sided backs itself. With the
+     * projection's Y flip, counter-clockwise world triangles stay
      * counter-clockwise in framebuffer space (gl_FrontFacing). */
     VkPipelineRasterizationStateCreateInfo raster = {.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
                                                      .polygonMode = VK_POLYGON_MODE_FILL,

@@ -117,6 +117,18 @@
  * output (the visibility buffer already holds them). Triangle ids stay below
  * it. */
 #define TV_ID_PRIOR 0x7FFFFFFFu
+/* The prior culled back (TV_ID_CULLED): it closes a prior front's interval
+ * and is otherwise skipped like every culled back. */
+#define TV_ID_PRIOR_CULLED 0x7FFFFFFEu
+
+/* Flag on a back's triangle id: a culled back, the back of a triangle whose
+ * material is single-sided (glTF doubleSided false) and whose plane has the
+ * whole viewcell behind it (P1, pvs_classify.comp). The renderer culls it
+ * from every eye of the viewcell, so it is never visible and hides nothing:
+ * it only closes the interval its front opened. It is never output, never
+ * terminates a pixel and is not a prior face. Triangle ids stay below it
+ * (it shares its bit with TV_REGION_CRACK, which flags region ids). */
+#define TV_ID_CULLED 0x40000000u
 
 /* Flag on a trim-region id: the region of a crack edge (scn_mark_cracks),
  * a border edge along which another triangle's border edge runs across a

@@ -1,7 +1,8 @@
 #version 460
 // P1: one invocation per triangle of the layer. Classifies the triangle as
 // front- or back-facing from v* (plane test, as pvs/silhouette.c), appends
-// it to the FF or BF draw list unless its clip-space outcodes put it outside
+// it to the FF or BF draw list (a back the renderer culls from the whole
+// viewcell flagged TV_ID_CULLED) unless its clip-space outcodes put it outside
 // one frustum plane, and emits a silhouette record (trim quad + umbra quad,
 // one trim-region id) for every silhouette edge it owns: border and
 // non-manifold edges always, an edge to an opposite-facing neighbour when
@@ -20,6 +21,22 @@ bool front_facing(uint tri)
 {
     vec3 a = corner_position(tri, 0u), b = corner_position(tri, 1u), c = corner_position(tri, 2u);
     return dot(cross(b - a, c - a), view.apex.xyz - a) > 0.0;
+}
+
+// Whether the renderer culls triangle tri (corners p) from every eye of the
+// viewcell: its material is single-sided and the double cone (the base disc
+// of radius delta through v0, apexes v0 -+ z forward, z = delta / tan alpha)
+// lies behind its plane, short of it by more than rounding. A back nearer to
+// edge-on may be a front for part of the viewcell and stays a plain back.
+bool culled_back(uint tri, vec3 p[3])
+{
+    if ((tv_materials[tv_tri_material[tri]].flags & TV_MAT_DOUBLE_SIDED) != 0u)
+        return false;
+    vec3 n = cross(p[1] - p[0], p[2] - p[0]), f = view.forward.xyz;
+    float z = view.delta / view.tan_alpha, nf = dot(n, f);
+    vec3 v0 = view.apex.xyz + z * f;
+    float reach = max(z * abs(nf), view.delta * length(n - nf * f));
+    return dot(n, v0 - p[0]) + reach < -1e-4 * length(n);
 }
 
 uint outcode(vec4 clip)
@@ -71,7 +88,7 @@ void main()
         if (front)
             ff_list[atomicAdd(counters[TV_PVS_C_DRAW_FF], 3u) / 3u] = tri;
         else
-            bf_list[atomicAdd(counters[TV_PVS_C_DRAW_BF], 3u) / 3u] = tri;
+            bf_list[atomicAdd(counters[TV_PVS_C_DRAW_BF], 3u) / 3u] = tri | (culled_back(tri, p) ? TV_ID_CULLED : 0u);
     }
     // Silhouettes of triangles outside the frustum are still emitted (unless
     // behind the near or beyond the far plane): their trim quads extend

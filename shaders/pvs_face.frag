@@ -2,7 +2,8 @@
 // P2, scene triangles: alpha mask exactly as the mesh pass, then the front
 // or back k-buffer. Both also write the visibility buffer (the pipeline's
 // LESS depth test keeps the nearest id), sealed pixels included, so that P4
-// sees the nearest triangle of every pixel (the renderer culls no faces).
+// sees the nearest triangle of every pixel; culled backs (TV_ID_CULLED),
+// which the renderer never shows, only enter the back k-buffer.
 // The exact pass also keeps the nearest depth of the front and of the back
 // faces covering each pixel centre (centre_depth; P3 reads them as the
 // prior faces of a pixel that becomes trimmed, TV_ID_PRIOR). The dilated
@@ -107,17 +108,32 @@ void main()
     vec4 base = tv_material_color(v_material, v_uv);
     if (tv_alpha_masked(v_material, base.a))
         discard;
-    o_triangle = v_triangle;
     uint p = pvs_pixel();
+    if ((v_triangle & TV_ID_CULLED) != 0u) {
+        // A back the renderer culls from the whole viewcell: it only closes
+        // the interval its front opened (pvs_resolve.glsl), so the exact pass
+        // stores it and keeps it apart as a prior face, and nothing else sees
+        // it: no visibility-buffer id (the discard keeps those stores), no
+        // candidate.
+        if (pc.kind == TV_PVS_KIND_BACK) {
+            atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED], floatBitsToUint(w));
+            if (!pvs_sealed(p))
+                pvs_push(p, TV_PVS_KIND_BACK, w, v_triangle);
+        }
+        discard;
+    }
+    o_triangle = v_triangle;
     if ((pc.kind & TV_PVS_KIND_SPILL) != 0u) {
         spill(p, w, slope);
         return;
     }
     uint kind = pc.kind & ~TV_PVS_KIND_WIDE, id = v_triangle;
     if (kind == pc.kind) {
-        atomicMin(centre_depth[2u * p + (kind == TV_PVS_KIND_BACK ? 1u : 0u)], floatBitsToUint(w));
+        atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + (kind == TV_PVS_KIND_BACK ? TV_PVS_CENTRE_BACK : TV_PVS_CENTRE_FRONT)],
+                  floatBitsToUint(w));
     } else { // the dilated pass, after the exact one
-        float nearest = uintBitsToFloat(min(centre_depth[2u * p], centre_depth[2u * p + 1u]));
+        uint c = TV_PVS_CENTRE_STRIDE * p;
+        float nearest = uintBitsToFloat(min(centre_depth[c + TV_PVS_CENTRE_FRONT], centre_depth[c + TV_PVS_CENTRE_BACK]));
         // Not dilated (a corner behind v*, or edge-on): rasterised exactly,
         // so every fragment covers its centre and only the tie rule applies.
         // Skipping it lost a floor crossing the near plane that z-fights

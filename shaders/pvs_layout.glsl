@@ -27,7 +27,11 @@
 #define TV_PVS_BIND_VIS_IDS    17 // r32ui storage image: the visibility buffer's ids
 #define TV_PVS_BIND_LAYER_STATS 18 // uvec4 per layer: entries, active pixels, sequence sum, overflows
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
-#define TV_PVS_BIND_CENTRE_DEPTH 20 // 2 uints per pixel: nearest depth bits of the front / back faces covering its centre
+#define TV_PVS_BIND_CENTRE_DEPTH 20 // TV_PVS_CENTRE_STRIDE uints per pixel: nearest depth bits of the faces covering its centre
+#define TV_PVS_CENTRE_FRONT   0u // slots of a pixel's TV_PVS_BIND_CENTRE_DEPTH entry (P2's exact pass, atomicMin)
+#define TV_PVS_CENTRE_BACK    1u
+#define TV_PVS_CENTRE_CULLED  2u // culled backs (TV_ID_CULLED): they close intervals only
+#define TV_PVS_CENTRE_STRIDE  3u
 #define TV_PVS_BIND_LOST       21 // TV_PVS_LOST_STRIDE uints per pixel, depth bits: the nearest lost front, lost candidate (P3 replaces it by the candidate spill bound), lost trim
 #define TV_PVS_LOST_FRONT     0u // slots of a pixel's TV_PVS_BIND_LOST entry: what the layer's k-buffer had no room for (P2, atomicMin)
 #define TV_PVS_LOST_CANDIDATE 1u

@@ -14,7 +14,7 @@
 #include "pvs_common.glsl"
 
 #define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
-#define IV_MAX (TV_K_BACK + 1 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 1 : TV_K_FRONT + TV_K_CARRY) // + a prior back
+#define IV_MAX (TV_K_BACK + 2 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 2 : TV_K_FRONT + TV_K_CARRY) // + two prior backs
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
 struct seq_entry {
@@ -67,7 +67,7 @@ bool entry_less(seq_entry a, seq_entry b)
 
 void output_id(uint id)
 {
-    if (id == TV_ID_PRIOR)
+    if (id == TV_ID_PRIOR || (id & TV_ID_CULLED) != 0u)
         return;
     tri_flags[id & ~TV_ID_CANDIDATE] = 1u;
     n_out++;
@@ -83,6 +83,9 @@ bool is_candidate(seq_entry e)
 // resolve.c's is_candidate_back: neither carried nor deciding the carried
 // hidden range.
 bool is_candidate_back(seq_entry e) { return e.kind == TV_ENTRY_BACK && is_candidate(e); }
+
+// resolve.c's is_culled: a back the renderer culls from the whole viewcell.
+bool is_culled(seq_entry e) { return e.kind == TV_ENTRY_BACK && e.id != TV_ID_PRIOR && (e.id & TV_ID_CULLED) != 0u; }
 
 float kdepth(uint bits) { return uintBitsToFloat(bits); }
 
@@ -135,11 +138,15 @@ uint gather(bool first)
     uint n = 0u;
     if (first) {
         const uint inf = 0x7F800000u;
-        uint f = centre_depth[2u * P], b = centre_depth[2u * P + 1u];
+        uint c = TV_PVS_CENTRE_STRIDE * P;
+        uint f = centre_depth[c + TV_PVS_CENTRE_FRONT], b = centre_depth[c + TV_PVS_CENTRE_BACK];
+        uint cb = centre_depth[c + TV_PVS_CENTRE_CULLED];
         if (f < inf && !stored_face(TV_ENTRY_FRONT, f))
             ent[n++] = make_entry(kdepth(f), TV_ENTRY_FRONT, TV_ID_PRIOR, 0);
         if (b < inf && !stored_face(TV_ENTRY_BACK, b))
             ent[n++] = make_entry(kdepth(b), TV_ENTRY_BACK, TV_ID_PRIOR, 0);
+        if (cb < inf && !stored_face(TV_ENTRY_BACK, cb))
+            ent[n++] = make_entry(kdepth(cb), TV_ENTRY_BACK, TV_ID_PRIOR_CULLED, 0);
     }
     for (uint i = 0u; i < carry_count; i++)
         if (carry[i].kind != TV_ENTRY_UMBRA)
@@ -222,6 +229,10 @@ void validate(uint n)
             iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
             iv_valid[v] = true;
         }
+        if (iv_cracked[v] && is_culled(ent[iv_back[v]])) { // resolve.c: seen through
+            iv_valid[v] = true;
+            iv_end[v] = hi;
+        }
     }
 }
 
@@ -293,14 +304,14 @@ bool walk(uint m)
                 output_id(e.id);
             continue;
         }
-        face_seen = face_seen || is_face;
+        face_seen = face_seen || (is_face && !is_culled(e));
         if (e.kind == TV_ENTRY_FRONT && in_valid) {
             if (!iv_hidden[e.interval])
                 output_id(e.id);
             continue;
         }
-        if (!is_face)
-            continue;
+        if (!is_face || (e.interval < 0 && is_culled(e)))
+            continue; // resolve.c: a lone culled back is neither seen nor an occluder
         if (prefix > 0) { // hidden; an unvalidated interval's front still seals (resolve.c)
             if (e.kind == TV_ENTRY_BACK || e.interval < 0)
                 continue;
@@ -315,9 +326,10 @@ bool walk(uint m)
             output_id(e.id);
             continue;
         }
-        // A lone back (no front before it: a single-sided surface seen from
-        // behind) is visible, as the renderer culls no faces; the back of a
-        // run whose front lies in an umbra is hidden by that front.
+        // A lone back (no front before it: a double-sided surface seen from
+        // behind, or a single-sided one whose plane the viewcell straddles)
+        // is visible; the back of a run whose front lies in an umbra is
+        // hidden by that front.
         if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
             output_id(e.id);
         if (e.kind == TV_ENTRY_FRONT && e.interval >= 0 && iv_cracked[e.interval])

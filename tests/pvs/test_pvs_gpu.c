@@ -435,10 +435,18 @@ static uint32_t add_box(scn_scene* s, float x0, float y0, float z0, float x1, fl
 }
 
 /* An empty scene with room for a few boxes; returns its grey material. */
+/* Single-sided material (glTF's default): the renderer culls its backs. */
 static uint32_t constructed_scene(fixture* f)
 {
-    fx_scene_init(&f->scene, 64, 1);
+    fx_scene_init(&f->scene, 64, 2);
     return fx_material(&f->scene, 0.8f, 0.8f, 0.8f, SCN_ALPHA_OPAQUE, false, -1);
+}
+
+/* A second, double-sided material: its backs are drawn, so they are seen
+ * and occlude like fronts. */
+static uint32_t double_sided(fixture* f)
+{
+    return fx_material(&f->scene, 0.6f, 0.7f, 0.8f, SCN_ALPHA_OPAQUE, true, -1);
 }
 
 /* Computes the PVS of a small viewcell at the origin looking down -Z and
@@ -533,6 +541,8 @@ static void test_occluders_across_layers(void)
     check_configuration(&f, "umbra inside an umbra, 4 triangles per leaf", 0.1f, FN_SIMPLE, hidden, 2, &beside, 1);
 }
 
+/* A double-sided quad seen from behind past a box's edge: its back is
+ * drawn, so it is visible there. */
 static void test_back_face_past_an_edge(void)
 {
     fixture f = {0};
@@ -540,8 +550,41 @@ static void test_back_face_past_an_edge(void)
     add_box(&f.scene, -3.0f, -2.0f, -4.2f, 0.5f, 2.0f, -4.0f, m);
     uint32_t quad = f.scene.triangle_count;
     const float away[4][3] = {{0.9f, -0.5f, -8.0f}, {0.75f, -0.5f, -8.0f}, {0.75f, 0.5f, -8.0f}, {0.9f, 0.5f, -8.0f}};
-    fx_quad(&f.scene, away, m);
+    fx_quad(&f.scene, away, double_sided(&f));
     check_configuration(&f, "back face past an occluder's edge", 0.3f, FN_SIMPLE, NULL, 0, &quad, 1);
+}
+
+/* A 4 x 3 m wall 4 m away facing away from the whole viewcell, and a box 4 m
+ * behind it. Double-sided, the wall hides the box and is in the PVS; single-
+ * sided (glTF's default), the renderer culls it from every eye: the box is
+ * seen through it and the wall is not in the PVS (its backs only close
+ * intervals, TV_ID_CULLED). Until culled backs existed a single-sided wall
+ * seen from behind sealed every pixel it covered. */
+static void test_culled_back_hides_nothing(void)
+{
+    for (int sides = 1; sides <= 2; sides++) {
+        fixture f = {0};
+        uint32_t m = constructed_scene(&f);
+        uint32_t wall = fx_quad_z(&f.scene, 2.0f, -1.5f, -2.0f, 1.5f, -4.0f, sides == 2 ? double_sided(&f) : m);
+        uint32_t box = add_box(&f.scene, -0.5f, -0.5f, -8.5f, 0.5f, 0.5f, -7.5f, m);
+        if (sides == 2) {
+            check_configuration(&f, "a double-sided wall seen from behind hides a box", 0.1f, FN_SIMPLE, &box, 1, &wall,
+                                1);
+        } else {
+            printf("  a single-sided wall seen from behind hides nothing\n");
+            scn_scene_update_bounds(&f.scene);
+            fixture_open(&f, 0);
+            pvs_result r;
+            pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.1f);
+            TV_CHECK(compute(&f, &vc, &r));
+            TV_CHECK(count_in_range(&r, wall, 2) == 0);
+            TV_CHECK(count_in_range(&r, box, 12) > 0);
+            TV_CHECK(apex_fn(&f, &r, &vc) == 0);
+            uint32_t at_v0, worst = cone_fn(&f, &r, &vc, &at_v0);
+            TV_CHECK(at_v0 == 0 && worst == 0);
+            fixture_close(&f);
+        }
+    }
 }
 
 /* A 10 cm slab whose right side v* sees almost edge-on, and an open quad
@@ -595,21 +638,26 @@ static void test_sliver_seen_from_behind(void)
     add_box(&f.scene, -3.0f, -2.0f, -5.1f, -0.05f, 2.0f, -5.0f, m);
     const float x0 = -0.16f, x1 = -0.145f, y0 = -0.5f, y1 = 0.5f, z = -10.0f;
     const float strip[4][3] = {{x1, y0, z}, {x0, y0, z}, {x0, y1, z}, {x1, y1, z}}; /* faces -z */
-    uint32_t back = fx_quad(&f.scene, strip, m);
+    uint32_t back = fx_quad(&f.scene, strip, double_sided(&f));
     check_configuration(&f, "a sliver seen from behind past a slab's edge", 0.1f, FN_SIMPLE, NULL, 0, &back, 1);
 }
 
 /* A pillar whose front face is two quads with a 1.9 cm vertical slit
  * between them, 2.5 m away: 0.65 PVS pixels wide and placed between two
  * PVS pixel centres, so v* sees nothing through it, while eyes of the
- * viewcell (whose pixels are finer) see the inside of the back face there,
- * a back face from everywhere in the viewcell. The slit's two edges are
- * crack edges (scn_mark_cracks), so the intervals their regions validate
- * output their back faces too. */
-static void test_crack_in_a_pillar(void)
+ * viewcell (whose pixels are finer) see through it. The slit's two edges
+ * are crack edges (scn_mark_cracks). Double-sided, the eyes see the inside
+ * of the back face, a back face from everywhere in the viewcell: the
+ * intervals the crack regions validate output their back faces too. Single-
+ * sided, that back is culled and the eyes see what lies behind the pillar:
+ * such an interval hides only its inside, and a box behind the slit is in
+ * the PVS. */
+static void crack_in_a_pillar(bool two_sided)
 {
     fixture f = {0};
     uint32_t m = constructed_scene(&f);
+    if (two_sided)
+        m = double_sided(&f);
     const float x0 = -0.7f, x1 = 0.9f, y0 = -1.0f, y1 = 1.0f, z0 = -3.5f, z1 = -2.5f, a = 0.4819f, b = 0.5007f;
     const float q[7][4][3] = {
         {{x0, y0, z1}, {a, y0, z1}, {a, y1, z1}, {x0, y1, z1}}, /* +z, left of the slit */
@@ -623,7 +671,18 @@ static void test_crack_in_a_pillar(void)
     uint32_t back = 0;
     for (int i = 0; i < 7; i++)
         back = fx_quad(&f.scene, q[i], m);
-    check_configuration(&f, "a crack in a pillar", 0.1f, FN_SIMPLE, NULL, 0, &back, 1);
+    if (two_sided) {
+        check_configuration(&f, "a crack in a double-sided pillar", 0.1f, FN_SIMPLE, NULL, 0, &back, 1);
+        return;
+    }
+    uint32_t behind = add_box(&f.scene, 0.9f, -0.3f, -6.5f, 1.5f, 0.3f, -6.0f, m); /* seen through the slit only */
+    check_configuration(&f, "a box behind a crack in a single-sided pillar", 0.1f, FN_SIMPLE, NULL, 0, &behind, 1);
+}
+
+static void test_crack_in_a_pillar(void)
+{
+    crack_in_a_pillar(true);
+    crack_in_a_pillar(false);
 }
 
 /* A 0.2 m square hole near the edge of the 60-degree target view (which
@@ -648,8 +707,8 @@ static void test_small_opening_at_view_edge(void)
     check_configuration(&f, "small opening at the edge of the view", 0.05f, FN_SLIVER, &hidden, 1, &through, 1);
 }
 
-/* A room whose ceiling is two coincident quads of opposite winding (a
- * zero-thickness double-sided surface, as BSP levels export), large enough
+/* A room whose ceiling is two coincident double-sided quads of opposite
+ * winding (a zero-thickness surface as some exporters write it), large enough
  * to pass behind v*: such triangles cross the near plane and are drawn
  * undilated. Both twins tie in depth at every pixel; the depth test keeps
  * one, but an eye's raster may show either (found on oa:oacmpdm9: the twin
@@ -661,8 +720,8 @@ static void test_coincident_twins_across_near_plane(void)
     const float e = 40.0f, yc = 2.0f;
     const float ceiling[4][3] = {{-e, yc, -e}, {e, yc, -e}, {e, yc, e}, {-e, yc, e}}; /* faces down */
     const float twin[4][3] = {{-e, yc, -e}, {-e, yc, e}, {e, yc, e}, {e, yc, -e}};    /* same diagonal, faces up */
-    uint32_t first = fx_quad(&f.scene, ceiling, m);
-    fx_quad(&f.scene, twin, m);
+    uint32_t first = fx_quad(&f.scene, ceiling, double_sided(&f));
+    fx_quad(&f.scene, twin, f.scene.material_count - 1);
     const float floor_q[4][3] = {{-e, -1.5f, -e}, {-e, -1.5f, e}, {e, -1.5f, e}, {e, -1.5f, -e}};
     fx_quad(&f.scene, floor_q, m);
     scn_scene_update_bounds(&f.scene);
@@ -904,6 +963,7 @@ int main(void)
     TV_TEST_RUN(test_occluders_across_layers);
     TV_TEST_RUN(test_uneroded_wall_in_an_umbra);
     TV_TEST_RUN(test_back_face_past_an_edge);
+    TV_TEST_RUN(test_culled_back_hides_nothing);
     TV_TEST_RUN(test_open_quad_past_a_slab_edge);
     TV_TEST_RUN(test_late_face_before_terminator);
     TV_TEST_RUN(test_crack_in_a_pillar);

@@ -77,7 +77,9 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         kb->front_depth[i] = rnd_depth();
         kb->front_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) | (rnd_u(4) == 0 ? TV_ID_CANDIDATE : 0u);
         kb->back_depth[i] = rnd_depth();
-        kb->back_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) | (rnd_u(4) == 0 ? TV_ID_CANDIDATE : 0u);
+        uint32_t back_kind = rnd_u(8); /* a quarter candidates, a quarter culled (P2 never makes both) */
+        kb->back_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) |
+                          (back_kind < 2 ? TV_ID_CANDIDATE : back_kind < 4 ? TV_ID_CULLED : 0u);
         kb->trim_depth[i] = rnd_depth();
         kb->trim_region[i] = rnd_region();
         kb->umbra_depth[i] = rnd_depth() + 0.05f * (float)rnd_u(3);
@@ -85,6 +87,7 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     }
     kb->nearest_front = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->nearest_back = rnd_u(2) ? rnd_depth() : INFINITY;
+    kb->nearest_culled_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->front_lost = rnd_u(8) == 0 ? rnd_depth() : 0.0f;
     kb->trim_lost = rnd_u(2) ? rnd_depth() : 0.0f; /* read when the trim list overflowed */
     if (st->stencil == TV_STENCIL_SEALED) {
@@ -174,8 +177,9 @@ static void upload(pvs_context* ctx, const case_data* c)
             memcpy(carry + 4 * (p * TV_K_CARRY + i), e, sizeof e);
         }
         active[p] = p;
-        centre[2 * p] = fbits(kb->nearest_front);
-        centre[2 * p + 1] = fbits(kb->nearest_back);
+        centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_FRONT] = fbits(kb->nearest_front);
+        centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_BACK] = fbits(kb->nearest_back);
+        centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED] = fbits(kb->nearest_culled_back);
         uint32_t* l = lost + TV_PVS_LOST_STRIDE * p;
         l[TV_PVS_LOST_FRONT] = kb->front_lost > 0.0f ? fbits(kb->front_lost) : fbits(INFINITY);
         l[TV_PVS_LOST_CANDIDATE] = fbits(INFINITY);

@@ -160,21 +160,26 @@ static void alpha_mask_discards(void)
 static void double_sided_back_faces(void)
 {
     /* quads facing away from the camera (normal -Z): the double-sided one is
-     * lit as if facing the camera, the single-sided one keeps its normal */
+     * lit as if facing the camera, the single-sided one is culled (glTF
+     * doubleSided false), showing the red quad behind it */
     scn_scene s;
-    fx_scene_init(&s, 2, 2);
+    fx_scene_init(&s, 3, 3);
     uint32_t two = fx_material(&s, 1, 1, 1, SCN_ALPHA_OPAQUE, true, -1);
     uint32_t one = fx_material(&s, 1, 1, 1, SCN_ALPHA_OPAQUE, false, -1);
     const float left[4][3] = {{-1, -1, -5}, {-1, 1, -5}, {-0.1f, 1, -5}, {-0.1f, -1, -5}};
     const float right[4][3] = {{0.1f, -1, -5}, {0.1f, 1, -5}, {1, 1, -5}, {1, -1, -5}};
+    uint32_t red = fx_material(&s, 1, 0, 0, SCN_ALPHA_OPAQUE, false, -1);
     fx_quad(&s, left, two);
     fx_quad(&s, right, one);
+    fx_quad_z(&s, -1, -1, 1, 1, -8, red);
     TV_CHECK(s.normals[2] < 0);
     rnd_camera cam = fx_camera();
     frame* f = render(&s, &cam);
-    const float front[3] = {0, 0, 1}, back[3] = {0, 0, -1};
+    const float front[3] = {0, 0, 1};
     TV_CHECK(abs(px(f, W / 2 - 6, H / 2)[0] - fx_srgb8(shade(1, front, 0))) <= 1);
-    TV_CHECK(abs(px(f, W / 2 + 6, H / 2)[0] - fx_srgb8(shade(1, back, 0))) <= 1);
+    TV_CHECK(f->ids[(H / 2) * W + W / 2 - 6] <= 1);
+    TV_CHECK(f->ids[(H / 2) * W + W / 2 + 6] >= 4);
+    TV_CHECK(abs(px(f, W / 2 + 6, H / 2)[0] - fx_srgb8(shade(1, front, 0))) <= 1 && px(f, W / 2 + 6, H / 2)[1] == 0);
     free(f);
     scn_scene_free(&s);
 }
