@@ -68,6 +68,15 @@
  * depths (about 1e-7), far below the thickness of thin walls (1 cm at 100 m
  * is 1e-4). */
 #define TV_PVS_TRIM_NUDGE 1e-5
+/* A culled back (TV_ID_CULLED) enters P2's lists this fraction of its depth
+ * farther: a single-sided surface exported as two coincident faces of
+ * opposite winding (BSP levels) rounds either way, and where the culled twin
+ * sorted first it was a lone back the walk skips, leaving the front without
+ * a back: a run carried through every later layer until its carry
+ * overflowed (oa:czest2ctf: PVS 2 -> 28 % of the scene). Twice
+ * TV_PVS_TRIM_NUDGE, so a trim in the twin's plane still lies inside. */
+#define TV_PVS_CULLED_NUDGE 2e-5
+
 /* The trim drawn at the farther plane depth is drawn only for silhouettes
  * whose front triangle v* sees within this cosine of edge-on (beyond 60
  * degrees from its normal): 0.5 kept every FN gain of drawing it always on

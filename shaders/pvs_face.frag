@@ -116,6 +116,7 @@ void main()
         // it: no visibility-buffer id (the discard keeps those stores), no
         // candidate.
         if (pc.kind == TV_PVS_KIND_BACK) {
+            w *= 1.0 + TV_PVS_CULLED_NUDGE; // behind a coincident front twin
             atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED], floatBitsToUint(w));
             if (!pvs_sealed(p))
                 pvs_push(p, TV_PVS_KIND_BACK, w, v_triangle);

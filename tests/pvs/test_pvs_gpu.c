@@ -734,6 +734,37 @@ static void test_coincident_twins_across_near_plane(void)
     fixture_close(&f);
 }
 
+/* A single-sided wall exported as two coincident quads of opposite winding
+ * (BSP levels), the culled twin rounded 0.01 mm nearer than the front, and
+ * 24 open quads facing v* stacked 5-8 m behind the wall near its left edge,
+ * hidden from the whole viewcell, at pixels the edge's trim region reaches.
+ * The culled twin sorted first was a lone back the walk skips, so the front
+ * had no back: a run carried through every later layer, whose carry
+ * overflowed on the quads behind, and the overflow policy output them all
+ * (TV_PVS_CULLED_NUDGE puts a culled back behind a coincident front). */
+static void test_culled_twin_of_a_wall(void)
+{
+    fixture f = {.octree_cap = 4};
+    uint32_t m = constructed_scene(&f);
+    const float z = -4.0f, twin_z = z + 1e-5f;
+    fx_quad_z(&f.scene, -2.0f, -1.5f, 2.0f, 1.5f, z, m);      /* faces v* */
+    fx_quad_z(&f.scene, 2.0f, -1.5f, -2.0f, 1.5f, twin_z, m); /* its culled twin */
+    uint32_t first = f.scene.triangle_count;
+    for (int i = 0; i < 24; i++) {
+        float d = 5.0f + 3.0f * (float)i / 23.0f; /* depth behind v0 */
+        fx_quad_z(&f.scene, -0.46f * d, -0.2f, -0.44f * d, 0.2f, -d, m);
+    }
+    scn_scene_update_bounds(&f.scene);
+    fixture_open(&f, 0);
+    pvs_result r;
+    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.1f);
+    TV_CHECK(compute(&f, &vc, &r));
+    printf("  quads behind the wall in the PVS: %u of 48\n", count_in_range(&r, first, 48));
+    TV_CHECK(count_in_range(&r, first, 48) == 0);
+    TV_CHECK(apex_fn(&f, &r, &vc) == 0);
+    fixture_close(&f);
+}
+
 /* ---- a finely tessellated surface: every triangle of it is visible ---- */
 
 /* Bumps of +-4 mm at the grid points of the wall below. */
@@ -970,6 +1001,7 @@ int main(void)
     TV_TEST_RUN(test_sliver_seen_from_behind);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
+    TV_TEST_RUN(test_culled_twin_of_a_wall);
     TV_TEST_RUN(test_fine_tessellation);
     TV_TEST_RUN(test_needles);
     TV_TEST_RUN(test_tiny_k_overflow);
