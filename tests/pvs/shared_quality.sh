@@ -1,5 +1,5 @@
 #!/bin/sh
-# The quality bar for trim regions on real scenes, where it is met
+# The quality bar for trim regions on real scenes (Sponza and the OpenArena levels)
 # (docs/results.md, "Where trim regions stand"): at delta = 10 cm (or the
 # given delta), in every
 # sampled viewcell (the two largest open-floor points of each level, 50
@@ -15,8 +15,8 @@ out=$2
 scenes=$3
 delta=${4:-0.1}
 shared=${TRIMVR_SHARED:-../shared}
-if [ ! -d "$shared/scenes/openarena" ]; then
-    echo "skip: $shared/scenes/openarena absent (../shared not available)"
+if [ ! -d "$shared/scenes/openarena" ] || [ ! -d "$shared/scenes/sponza_lod4" ]; then
+    echo "skip: $shared/scenes/openarena or sponza_lod4 absent (../shared not available)"
     exit 77
 fi
 rm -rf "$out"
