@@ -341,6 +341,26 @@ static void soup_box(scn_scene* s, const float lo[3], const float hi[3], uint32_
         fx_quad(s, q[i], m);
 }
 
+/* Opens the fixture's scene and computes the PVS of the viewcell at the
+ * origin looking down -Z. */
+static void compute_at_origin(fixture* f, float delta, pvs_viewcell* vc, pvs_result* r)
+{
+    scn_scene_update_bounds(&f->scene);
+    fixture_open(f, 0);
+    *vc = viewcell(0.0f, 0.0f, 0.0f, delta);
+    TV_CHECK(compute(f, vc, r));
+}
+
+/* No false-negative pixel from the apex or v0, and at most fn_fraction of
+ * a view at any sample of the double cone. */
+static void check_fn(fixture* f, const pvs_result* r, const pvs_viewcell* vc, double fn_fraction)
+{
+    TV_CHECK(apex_fn(f, r, vc) == 0);
+    uint32_t at_v0, worst = cone_fn(f, r, vc, &at_v0);
+    printf("  FN pixels: %u at v0 (3 renders), worst cone sample %u\n", at_v0, worst);
+    TV_CHECK(at_v0 == 0 && worst <= fn_bound(fn_fraction));
+}
+
 static void test_soup_nonmanifold(void)
 {
     fixture f = {0};
@@ -357,18 +377,12 @@ static void test_soup_nonmanifold(void)
     fx_quad_z(&f.scene, 1.0f, -1.5f, 1.6f, -0.9f, -3.0f, m);
     uint32_t hidden = f.scene.triangle_count;
     soup_box(&f.scene, (float[3]){-0.5f, -0.5f, -12.0f}, (float[3]){0.5f, 0.5f, -11.0f}, m);
-    scn_scene_update_bounds(&f.scene);
-    fixture_open(&f, 0);
-
     pvs_result r;
-    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.05f);
-    TV_CHECK(compute(&f, &vc, &r));
+    pvs_viewcell vc;
+    compute_at_origin(&f, 0.05f, &vc, &r);
     TV_CHECK(count_in_range(&r, hidden, 12) == 0);
     TV_CHECK(count_in_range(&r, 0, 2) == 2); /* the wall's front face */
-    TV_CHECK(apex_fn(&f, &r, &vc) == 0);
-    uint32_t at_v0, worst = cone_fn(&f, &r, &vc, &at_v0);
-    TV_CHECK(at_v0 == 0);
-    TV_CHECK(worst <= fn_bound(FN_SIMPLE));
+    check_fn(&f, &r, &vc, FN_SIMPLE);
     fixture_close(&f);
 }
 
@@ -457,20 +471,15 @@ static void check_configuration(fixture* f, const char* what, float delta, doubl
                                 int n_hidden, const uint32_t* visible, int n_visible)
 {
     printf("  %s\n", what);
-    scn_scene_update_bounds(&f->scene);
-    fixture_open(f, 0);
     pvs_result r;
-    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, delta);
-    TV_CHECK(compute(f, &vc, &r));
+    pvs_viewcell vc;
+    compute_at_origin(f, delta, &vc, &r);
     TV_CHECK(f->octree_cap == 0 || r.stats.layers > 3);
     for (int i = 0; i < n_hidden; i++)
         TV_CHECK(count_in_range(&r, hidden[i], 12) == 0);
     for (int i = 0; i < n_visible; i++)
         TV_CHECK(count_in_range(&r, visible[i], 12) > 0);
-    TV_CHECK(apex_fn(f, &r, &vc) == 0);
-    uint32_t at_v0, worst = cone_fn(f, &r, &vc, &at_v0);
-    printf("  FN pixels: %u at v0 (3 renders), worst cone sample %u\n", at_v0, worst);
-    TV_CHECK(at_v0 == 0 && worst <= fn_bound(fn_fraction));
+    check_fn(f, &r, &vc, fn_fraction);
     fixture_close(f);
 }
 
@@ -572,16 +581,12 @@ static void test_culled_back_hides_nothing(void)
                                 1);
         } else {
             printf("  a single-sided wall seen from behind hides nothing\n");
-            scn_scene_update_bounds(&f.scene);
-            fixture_open(&f, 0);
             pvs_result r;
-            pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.1f);
-            TV_CHECK(compute(&f, &vc, &r));
+            pvs_viewcell vc;
+            compute_at_origin(&f, 0.1f, &vc, &r);
             TV_CHECK(count_in_range(&r, wall, 2) == 0);
             TV_CHECK(count_in_range(&r, box, 12) > 0);
-            TV_CHECK(apex_fn(&f, &r, &vc) == 0);
-            uint32_t at_v0, worst = cone_fn(&f, &r, &vc, &at_v0);
-            TV_CHECK(at_v0 == 0 && worst == 0);
+            check_fn(&f, &r, &vc, FN_SIMPLE);
             fixture_close(&f);
         }
     }
@@ -754,14 +759,12 @@ static void test_culled_twin_of_a_wall(void)
         float d = 5.0f + 3.0f * (float)i / 23.0f; /* depth behind v0 */
         fx_quad_z(&f.scene, -0.46f * d, -0.2f, -0.44f * d, 0.2f, -d, m);
     }
-    scn_scene_update_bounds(&f.scene);
-    fixture_open(&f, 0);
     pvs_result r;
-    pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.1f);
-    TV_CHECK(compute(&f, &vc, &r));
+    pvs_viewcell vc;
+    compute_at_origin(&f, 0.1f, &vc, &r);
     printf("  quads behind the wall in the PVS: %u of 48\n", count_in_range(&r, first, 48));
     TV_CHECK(count_in_range(&r, first, 48) == 0);
-    TV_CHECK(apex_fn(&f, &r, &vc) == 0);
+    check_fn(&f, &r, &vc, FN_SIMPLE);
     fixture_close(&f);
 }
 
