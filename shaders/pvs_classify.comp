@@ -23,20 +23,16 @@ bool front_facing(uint tri)
     return dot(cross(b - a, c - a), view.apex.xyz - a) > 0.0;
 }
 
-// Whether the renderer culls triangle tri (corners p) from every eye of the
-// viewcell: its material is single-sided and the double cone (the base disc
-// of radius delta through v0, apexes v0 -+ z forward, z = delta / tan alpha)
-// lies behind its plane, short of it by more than rounding. A back nearer to
-// edge-on may be a front for part of the viewcell and stays a plain back.
-bool culled_back(uint tri, vec3 p[3])
+// How far the double cone reaches in front of the plane of the triangle with
+// corners p (positive: some eye of the viewcell sees its front), in metres:
+// the cone's support along the normal, the base disc of radius delta through
+// v0 and the apexes v0 -+ z forward (z = delta / tan alpha).
+float front_reach(vec3 p[3])
 {
-    if ((tv_materials[tv_tri_material[tri]].flags & TV_MAT_DOUBLE_SIDED) != 0u)
-        return false;
-    vec3 n = cross(p[1] - p[0], p[2] - p[0]), f = view.forward.xyz;
+    vec3 n = normalize(cross(p[1] - p[0], p[2] - p[0])), f = view.forward.xyz;
     float z = view.delta / view.tan_alpha, nf = dot(n, f);
     vec3 v0 = view.apex.xyz + z * f;
-    float reach = max(z * abs(nf), view.delta * length(n - nf * f));
-    return dot(n, v0 - p[0]) + reach < -1e-4 * length(n);
+    return dot(n, v0 - p[0]) + max(z * abs(nf), view.delta * length(n - nf * f));
 }
 
 uint outcode(vec4 clip)
@@ -85,10 +81,20 @@ void main()
     uint codes = outcode(view.view_proj * vec4(p[0], 1.0)) & outcode(view.view_proj * vec4(p[1], 1.0)) &
                  outcode(view.view_proj * vec4(p[2], 1.0));
     if (codes == 0u) {
+        float reach = front ? 0.0 : front_reach(p);
+        // A back whose plane the viewcell straddles shows its front to some
+        // eyes, where v*'s walk sees only its back (an edge-on side face
+        // past v*'s occluder): output like a visible front. A single-sided
+        // back wholly behind it (short of the plane by more than rounding)
+        // the renderer culls from every eye.
+        bool culled = !front && reach < -1e-4 &&
+                      (tv_materials[tv_tri_material[tri]].flags & TV_MAT_DOUBLE_SIDED) == 0u;
+        if (!front && reach > 0.0)
+            tri_flags[tri] = 1u;
         if (front)
             ff_list[atomicAdd(counters[TV_PVS_C_DRAW_FF], 3u) / 3u] = tri;
         else
-            bf_list[atomicAdd(counters[TV_PVS_C_DRAW_BF], 3u) / 3u] = tri | (culled_back(tri, p) ? TV_ID_CULLED : 0u);
+            bf_list[atomicAdd(counters[TV_PVS_C_DRAW_BF], 3u) / 3u] = tri | (culled ? TV_ID_CULLED : 0u);
     }
     // Silhouettes of triangles outside the frustum are still emitted (unless
     // behind the near or beyond the far plane): their trim quads extend
