@@ -216,9 +216,9 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     pvs_desc d = desc ? *desc : (pvs_desc){0};
     if (!check_desc(&d, err, err_size))
         return NULL;
-    if (scene->triangle_count >= TV_ID_CULLED) { /* the id flags sit above the ids */
+    if (scene->triangle_count >= TV_ID_STRADDLED) { /* the id flags sit above the ids */
         snprintf(err, err_size, "pvs: %s has %u triangles, the PVS handles fewer than %u", scene->name,
-                 scene->triangle_count, TV_ID_CULLED);
+                 scene->triangle_count, TV_ID_STRADDLED);
         return NULL;
     }
     if (rnd_scene_triangle_count(gpu) != scene->triangle_count) {

@@ -135,12 +135,19 @@ static bool is_culled(const seq_entry* e)
     return e->kind == TV_ENTRY_BACK && e->id != TV_ID_PRIOR && (e->id & TV_ID_CULLED) != 0;
 }
 
+/* A back whose plane the viewcell straddles (TV_ID_STRADDLED): some eyes
+ * see its front. The prior ids carry the flag bit but also TV_ID_CULLED. */
+static bool is_straddled(const seq_entry* e)
+{
+    return e->kind == TV_ENTRY_BACK && (e->id & TV_ID_CULLED) == 0 && (e->id & TV_ID_STRADDLED) != 0;
+}
+
 /* Appends a face's triangle to the output; prior faces are already in the
  * PVS through the visibility buffer, and culled backs are never drawn. */
 static void emit(uint32_t* out, uint32_t* n, uint32_t id)
 {
     if (id != TV_ID_PRIOR && (id & TV_ID_CULLED) == 0)
-        out[(*n)++] = id & ~TV_ID_CANDIDATE;
+        out[(*n)++] = id & ~(TV_ID_CANDIDATE | TV_ID_STRADDLED);
 }
 
 /* The overflow policy: every front this pixel knows of is output and the
@@ -405,8 +412,9 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
         bool is_face = e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK;
         if (e->delta > 0 && e->kind == TV_ENTRY_FRONT) {
             iv->hidden[e->interval] = prefix > 0; /* its run starts inside an umbra */
-            /* a crack in the front surface shows the back from inside */
-            if (prefix == 0 && iv->cracked[e->interval])
+            /* a crack in the front surface shows the back from inside; a
+             * straddled back shows its front to the eyes past the edge */
+            if (prefix == 0 && (iv->cracked[e->interval] || is_straddled(&seq[iv->back[e->interval]])))
                 emit(out, n_out, seq[iv->back[e->interval]].id);
         }
         if (prefix == 0 && e->delta > 0)
@@ -470,8 +478,9 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
          * hidden by that front. */
         if (e->kind == TV_ENTRY_FRONT || e->interval < 0)
             emit(out, n_out, e->id);
-        if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->cracked[e->interval])
-            emit(out, n_out, seq[iv->back[e->interval]].id); /* seen through the crack */
+        if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 &&
+            (iv->cracked[e->interval] || is_straddled(&seq[iv->back[e->interval]])))
+            emit(out, n_out, seq[iv->back[e->interval]].id); /* seen through the crack, or from its front */
         *term = e->depth;
         s->hide_begin = span_lo;
         s->hide_end = span_hi;

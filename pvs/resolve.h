@@ -31,7 +31,8 @@
  * back of an interval that a crack edge's trim (TV_REGION_CRACK) lies in,
  * or up to TV_PVS_CRACK_SLACK_M in front of, is output with its first
  * front (validated and unhidden, or the terminator): the eyes see it
- * through the crack.
+ * through the crack. So is a straddled back (id | TV_ID_STRADDLED: the
+ * viewcell straddles its plane, so some eyes see its front).
  *
  * Culled backs (back id | TV_ID_CULLED: the renderer culls the triangle
  * from the whole viewcell, glTF's single-sided materials) close the interval

@@ -126,6 +126,15 @@
  * output (the visibility buffer already holds them). Triangle ids stay below
  * it. */
 #define TV_ID_PRIOR 0x7FFFFFFFu
+/* Flag on a back's triangle id: a straddled back, whose plane the viewcell
+ * straddles (P1), so that some eyes see its front while v* sees its back (a
+ * side face seen edge-on past an occluder's edge). Where it closes an
+ * interval, it is output with that interval's first front when the walk
+ * reaches it unhidden, as the back of a cracked interval is. Triangle ids
+ * stay below it; the prior ids, which have it, are recognised by
+ * TV_ID_CULLED. */
+#define TV_ID_STRADDLED 0x20000000u
+
 /* The prior culled back (TV_ID_CULLED): it closes a prior front's interval
  * and is otherwise skipped like every culled back. */
 #define TV_ID_PRIOR_CULLED 0x7FFFFFFEu

@@ -81,20 +81,17 @@ void main()
     uint codes = outcode(view.view_proj * vec4(p[0], 1.0)) & outcode(view.view_proj * vec4(p[1], 1.0)) &
                  outcode(view.view_proj * vec4(p[2], 1.0));
     if (codes == 0u) {
+        // A single-sided back wholly behind the viewcell (short of its plane
+        // by more than rounding) the renderer culls from every eye; a back
+        // whose plane the viewcell straddles shows its front to some eyes.
         float reach = front ? 0.0 : front_reach(p);
-        // A back whose plane the viewcell straddles shows its front to some
-        // eyes, where v*'s walk sees only its back (an edge-on side face
-        // past v*'s occluder): output like a visible front. A single-sided
-        // back wholly behind it (short of the plane by more than rounding)
-        // the renderer culls from every eye.
         bool culled = !front && reach < -1e-4 &&
                       (tv_materials[tv_tri_material[tri]].flags & TV_MAT_DOUBLE_SIDED) == 0u;
-        if (!front && reach > 0.0)
-            tri_flags[tri] = 1u;
         if (front)
             ff_list[atomicAdd(counters[TV_PVS_C_DRAW_FF], 3u) / 3u] = tri;
         else
-            bf_list[atomicAdd(counters[TV_PVS_C_DRAW_BF], 3u) / 3u] = tri | (culled ? TV_ID_CULLED : 0u);
+            bf_list[atomicAdd(counters[TV_PVS_C_DRAW_BF], 3u) / 3u] =
+                tri | (culled ? TV_ID_CULLED : 0u) | (reach > 0.0 ? TV_ID_STRADDLED : 0u);
     }
     // Silhouettes of triangles outside the frustum are still emitted (unless
     // behind the near or beyond the far plane): their trim quads extend

@@ -97,7 +97,7 @@ void main()
     uint slot = uint(gl_VertexIndex) / 3u;
     uint corner = uint(gl_VertexIndex) - slot * 3u;
     uint listed = (pc.kind & ~(TV_PVS_KIND_WIDE | TV_PVS_KIND_SPILL)) == TV_PVS_KIND_FRONT ? ff_list[slot] : bf_list[slot];
-    uint tri = listed & ~TV_ID_CULLED;
+    uint tri = listed & ~(TV_ID_CULLED | TV_ID_STRADDLED);
     vec4 c[3];
     for (uint i = 0u; i < 3u; i++)
         c[i] = view.view_proj * vec4(tv_vertex_position(tv_vertex_index(tri, i)), 1.0);
@@ -141,6 +141,6 @@ void main()
         }
     }
     gl_Position = pos;
-    v_triangle = listed; // with TV_ID_CULLED: pvs_face.frag
+    v_triangle = listed; // with the flags of P1's list: pvs_face.frag
     v_material = tv_tri_material[tri];
 }

@@ -69,7 +69,7 @@ void output_id(uint id)
 {
     if (id == TV_ID_PRIOR || (id & TV_ID_CULLED) != 0u)
         return;
-    tri_flags[id & ~TV_ID_CANDIDATE] = 1u;
+    tri_flags[id & ~(TV_ID_CANDIDATE | TV_ID_STRADDLED)] = 1u;
     n_out++;
 }
 
@@ -86,6 +86,12 @@ bool is_candidate_back(seq_entry e) { return e.kind == TV_ENTRY_BACK && is_candi
 
 // resolve.c's is_culled: a back the renderer culls from the whole viewcell.
 bool is_culled(seq_entry e) { return e.kind == TV_ENTRY_BACK && e.id != TV_ID_PRIOR && (e.id & TV_ID_CULLED) != 0u; }
+
+// resolve.c's is_straddled: a back some eyes see from the front.
+bool is_straddled(seq_entry e)
+{
+    return e.kind == TV_ENTRY_BACK && (e.id & TV_ID_CULLED) == 0u && (e.id & TV_ID_STRADDLED) != 0u;
+}
 
 float kdepth(uint bits) { return uintBitsToFloat(bits); }
 
@@ -286,8 +292,8 @@ bool walk(uint m)
         bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
         if (e.delta > 0 && e.kind == TV_ENTRY_FRONT) {
             iv_hidden[e.interval] = prefix > 0;
-            if (prefix == 0 && iv_cracked[e.interval]) // seen through the crack
-                output_id(ent[iv_back[e.interval]].id);
+            if (prefix == 0 && (iv_cracked[e.interval] || is_straddled(ent[iv_back[e.interval]])))
+                output_id(ent[iv_back[e.interval]].id); // seen through the crack, or from its front
         }
         if (prefix == 0 && e.delta > 0)
             open = e.kind == TV_ENTRY_BEGIN ? e.depth : ent[iv_back[e.interval]].depth;
@@ -332,8 +338,9 @@ bool walk(uint m)
         // hidden by that front.
         if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
             output_id(e.id);
-        if (e.kind == TV_ENTRY_FRONT && e.interval >= 0 && iv_cracked[e.interval])
-            output_id(ent[iv_back[e.interval]].id); // seen through the crack
+        if (e.kind == TV_ENTRY_FRONT && e.interval >= 0 &&
+            (iv_cracked[e.interval] || is_straddled(ent[iv_back[e.interval]])))
+            output_id(ent[iv_back[e.interval]].id); // seen through the crack, or from its front
         term_depth = e.depth;
         hide_begin = span_lo;
         hide_end = span_hi;

@@ -77,9 +77,12 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         kb->front_depth[i] = rnd_depth();
         kb->front_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) | (rnd_u(4) == 0 ? TV_ID_CANDIDATE : 0u);
         kb->back_depth[i] = rnd_depth();
-        uint32_t back_kind = rnd_u(8); /* a quarter candidates, a quarter culled (P2 never makes both) */
+        /* a quarter candidates, a quarter culled (P2 never makes both), a
+         * quarter straddled (a candidate or not) */
+        uint32_t back_kind = rnd_u(8);
         kb->back_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) |
-                          (back_kind < 2 ? TV_ID_CANDIDATE : back_kind < 4 ? TV_ID_CULLED : 0u);
+                          (back_kind < 2 ? TV_ID_CANDIDATE : back_kind < 4 ? TV_ID_CULLED : 0u) |
+                          (back_kind == 1 || back_kind >= 6 ? TV_ID_STRADDLED : 0u);
         kb->trim_depth[i] = rnd_depth();
         kb->trim_region[i] = rnd_region();
         kb->umbra_depth[i] = rnd_depth() + 0.05f * (float)rnd_u(3);
