@@ -239,7 +239,10 @@ typedef struct intervals {
     uint32_t first[IV_MAX], back[IV_MAX]; /* sequence indices */
     bool valid[IV_MAX];
     bool hidden[IV_MAX]; /* set by the walk: the run starts inside an umbra */
-    bool cracked[IV_MAX]; /* a crack edge's trim lies in it or just in front (TV_REGION_CRACK) */
+    /* its back is output with its first front: a crack edge's trim
+     * (TV_REGION_CRACK) lies in it or just in front, or the back is
+     * straddled (validate) */
+    bool show_back[IV_MAX];
     float end[IV_MAX]; /* depth where the hidden range of a valid interval ends */
     int32_t run;       /* first front of the trailing unfinished run, -1 none */
     float trims_lost;  /* nearest depth of a trim the list had no room for (INFINITY: none) */
@@ -321,7 +324,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
         float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
         bool lost = hi >= iv->trims_lost;
         iv->valid[v] = lost;
-        iv->cracked[v] = false;
+        bool cracked = false;
         iv->end[v] = hi;
         for (uint32_t i = 0; i < n; i++) {
             if (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth >= iv->trims_lost)
@@ -330,7 +333,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
              * beside the crack may be a neighbour a few mm behind it */
             bool crack = seq[i].kind == TV_ENTRY_TRIM && seq[i].id != TV_ID_PRIOR && (seq[i].id & TV_REGION_CRACK) != 0;
             if (crack && seq[i].depth >= lo - TV_PVS_CRACK_SLACK_M && seq[i].depth <= hi)
-                iv->cracked[v] = true;
+                cracked = true;
             if (lost || seq[i].kind != TV_ENTRY_TRIM || !region_meets(seq, n, i, lo, hi, iv->trims_lost))
                 continue;
             float u = hi;
@@ -341,10 +344,13 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
         }
         /* Through a crack the eyes see the inside, and with the back culled
          * whatever lies behind it: the interval hides its inside only. */
-        if (iv->cracked[v] && is_culled(&seq[iv->back[v]])) {
+        if (cracked && is_culled(&seq[iv->back[v]])) {
             iv->valid[v] = true;
             iv->end[v] = hi;
         }
+        /* the eyes see the back through the crack, or a straddled back's
+         * front past the edge (an unseen culled back emits nothing) */
+        iv->show_back[v] = cracked || is_straddled(&seq[iv->back[v]]);
     }
 }
 
@@ -412,9 +418,7 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
         bool is_face = e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK;
         if (e->delta > 0 && e->kind == TV_ENTRY_FRONT) {
             iv->hidden[e->interval] = prefix > 0; /* its run starts inside an umbra */
-            /* a crack in the front surface shows the back from inside; a
-             * straddled back shows its front to the eyes past the edge */
-            if (prefix == 0 && (iv->cracked[e->interval] || is_straddled(&seq[iv->back[e->interval]])))
+            if (prefix == 0 && iv->show_back[e->interval])
                 emit(out, n_out, seq[iv->back[e->interval]].id);
         }
         if (prefix == 0 && e->delta > 0)
@@ -478,9 +482,8 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
          * hidden by that front. */
         if (e->kind == TV_ENTRY_FRONT || e->interval < 0)
             emit(out, n_out, e->id);
-        if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 &&
-            (iv->cracked[e->interval] || is_straddled(&seq[iv->back[e->interval]])))
-            emit(out, n_out, seq[iv->back[e->interval]].id); /* seen through the crack, or from its front */
+        if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->show_back[e->interval])
+            emit(out, n_out, seq[iv->back[e->interval]].id);
         *term = e->depth;
         s->hide_begin = span_lo;
         s->hide_end = span_hi;

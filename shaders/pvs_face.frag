@@ -29,6 +29,7 @@ layout(location = 3) flat in vec4 v_s01;
 layout(location = 4) flat in vec3 v_s2;
 layout(location = 5) flat in float v_far;
 layout(location = 6) flat in float v_near;
+layout(location = 7) flat in uint v_id_flags;
 
 layout(location = 0) out uint o_triangle;
 
@@ -85,14 +86,14 @@ void spill(uint p, float w, float slope)
         return;
     if ((pc.kind & TV_PVS_KIND_WIDE) == 0u) {
         if (pixstate[p].x == TV_STENCIL_OVERFLOW && lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_FRONT] != 0x7F800000u)
-            tri_flags[v_triangle & ~TV_ID_STRADDLED] = 1u;
+            tri_flags[v_triangle] = 1u;
         return;
     }
     if (v_s2.z == 0.0 || covers_centre())
         return; // not a candidate: the exact spill draw's
     float depth = max(v_near, w - 0.5 * slope); // as P2 pushed it
     if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE])) // P3's bound
-        tri_flags[v_triangle & ~TV_ID_STRADDLED] = 1u;
+        tri_flags[v_triangle] = 1u;
 }
 
 void main()
@@ -109,7 +110,7 @@ void main()
     if (tv_alpha_masked(v_material, base.a))
         discard;
     uint p = pvs_pixel();
-    if ((v_triangle & TV_ID_CULLED) != 0u) {
+    if ((v_id_flags & TV_ID_CULLED) != 0u) {
         // A back the renderer culls from the whole viewcell: it only closes
         // the interval its front opened (pvs_resolve.glsl), so the exact pass
         // stores it and keeps it apart as a prior face, and nothing else sees
@@ -119,16 +120,16 @@ void main()
             w *= 1.0 + TV_PVS_CULLED_NUDGE; // behind a coincident front twin
             atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED], floatBitsToUint(w));
             if (!pvs_sealed(p))
-                pvs_push(p, TV_PVS_KIND_BACK, w, v_triangle);
+                pvs_push(p, TV_PVS_KIND_BACK, w, v_triangle | v_id_flags);
         }
         discard;
     }
-    o_triangle = v_triangle & ~TV_ID_STRADDLED;
+    o_triangle = v_triangle;
     if ((pc.kind & TV_PVS_KIND_SPILL) != 0u) {
         spill(p, w, slope);
         return;
     }
-    uint kind = pc.kind & ~TV_PVS_KIND_WIDE, id = v_triangle;
+    uint kind = pc.kind & ~TV_PVS_KIND_WIDE, id = v_triangle | v_id_flags;
     if (kind == pc.kind) {
         atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + (kind == TV_PVS_KIND_BACK ? TV_PVS_CENTRE_BACK : TV_PVS_CENTRE_FRONT)],
                   floatBitsToUint(w));
@@ -144,7 +145,7 @@ void main()
             // faces): the depth test kept one, but an eye's raster may show
             // either (z-fighting), so both are visible from v*.
             if (w <= nearest + slope * TV_PVS_TIE_SLOPES)
-                tri_flags[v_triangle & ~TV_ID_STRADDLED] = 1u;
+                tri_flags[v_triangle] = 1u;
             return;
         }
         // Visible from v* through part of the pixel: in front of everything
@@ -154,7 +155,7 @@ void main()
         // surface just behind it: an eye's pixel centre may land on it).
         float inside = max(v_near, w - 0.5 * slope); // its nearest depth in the pixel
         if (v_far < nearest || inside <= nearest + slope * TV_PVS_TIE_SLOPES)
-            tri_flags[v_triangle & ~TV_ID_STRADDLED] = 1u;
+            tri_flags[v_triangle] = 1u;
         if (kind == TV_PVS_KIND_BACK && !narrower_than_a_pixel())
             return; // a wider back covers pixel centres, where it is in the sequence
         // A candidate stands for the part of the triangle inside the pixel,
@@ -168,7 +169,7 @@ void main()
     }
     if (pvs_sealed(p)) { // a face of a later layer in front of the terminator (pvs_sealed_output)
         if (pvs_sealed_output(p, w))
-            tri_flags[v_triangle & ~TV_ID_STRADDLED] = 1u;
+            tri_flags[v_triangle] = 1u;
         return;
     }
     if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {

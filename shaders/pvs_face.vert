@@ -21,6 +21,7 @@ layout(location = 3) flat out vec4 v_s01; // undilated screen corners 0 and 1
 layout(location = 4) flat out vec3 v_s2;  // corner 2, orientation (0: not dilated)
 layout(location = 5) flat out float v_far; // farthest corner's depth (clip w)
 layout(location = 6) flat out float v_near; // nearest corner's depth (clip w)
+layout(location = 7) flat out uint v_id_flags; // TV_ID_CULLED / TV_ID_STRADDLED from P1's list
 
 // Two enlargements, each containing every pixel the triangle touches (its
 // Minkowski sum with the pixel square); the first is drawn unless the
@@ -141,6 +142,7 @@ void main()
         }
     }
     gl_Position = pos;
-    v_triangle = listed; // with the flags of P1's list: pvs_face.frag
+    v_triangle = tri;
+    v_id_flags = listed & ~tri;
     v_material = tv_tri_material[tri];
 }

@@ -39,7 +39,7 @@ TV_RESOLVE_STORAGE seq_entry ent[TV_RESOLVE_ENTRIES];
 uint iv_count;
 uint iv_first[IV_MAX], iv_back[IV_MAX];
 bool iv_valid[IV_MAX];
-bool iv_cracked[IV_MAX]; // a crack edge's trim lies in it or just in front (TV_REGION_CRACK)
+bool iv_show_back[IV_MAX]; // resolve.c's show_back: its back is output with its first front
 float trims_lost; // nearest depth of a trim the list had no room for (+inf: none): see validate()
 bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
 float iv_end[IV_MAX];
@@ -219,14 +219,14 @@ void validate(uint n)
         float lo = ent[iv_first[v]].depth, hi = ent[iv_back[v]].depth;
         bool lost_here = hi >= trims_lost; // a lost trim may validate it, and its umbra be the nearest
         iv_valid[v] = lost_here;
-        iv_cracked[v] = false;
+        bool cracked = false;
         iv_end[v] = hi;
         for (uint i = 0u; i < n; i++) {
             if (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth >= trims_lost)
                 continue; // found room by arrival order (resolve.c)
             bool crack = ent[i].kind == TV_ENTRY_TRIM && ent[i].id != TV_ID_PRIOR && (ent[i].id & TV_REGION_CRACK) != 0u;
             if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
-                iv_cracked[v] = true;
+                cracked = true;
             if (lost_here || ent[i].kind != TV_ENTRY_TRIM || !region_meets(n, i, lo, hi))
                 continue;
             float u = hi;
@@ -235,10 +235,11 @@ void validate(uint n)
             iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
             iv_valid[v] = true;
         }
-        if (iv_cracked[v] && is_culled(ent[iv_back[v]])) { // resolve.c: seen through
+        if (cracked && is_culled(ent[iv_back[v]])) { // resolve.c: seen through
             iv_valid[v] = true;
             iv_end[v] = hi;
         }
+        iv_show_back[v] = cracked || is_straddled(ent[iv_back[v]]);
     }
 }
 
@@ -292,8 +293,8 @@ bool walk(uint m)
         bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
         if (e.delta > 0 && e.kind == TV_ENTRY_FRONT) {
             iv_hidden[e.interval] = prefix > 0;
-            if (prefix == 0 && (iv_cracked[e.interval] || is_straddled(ent[iv_back[e.interval]])))
-                output_id(ent[iv_back[e.interval]].id); // seen through the crack, or from its front
+            if (prefix == 0 && iv_show_back[e.interval])
+                output_id(ent[iv_back[e.interval]].id);
         }
         if (prefix == 0 && e.delta > 0)
             open = e.kind == TV_ENTRY_BEGIN ? e.depth : ent[iv_back[e.interval]].depth;
@@ -338,9 +339,8 @@ bool walk(uint m)
         // hidden by that front.
         if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
             output_id(e.id);
-        if (e.kind == TV_ENTRY_FRONT && e.interval >= 0 &&
-            (iv_cracked[e.interval] || is_straddled(ent[iv_back[e.interval]])))
-            output_id(ent[iv_back[e.interval]].id); // seen through the crack, or from its front
+        if (e.kind == TV_ENTRY_FRONT && e.interval >= 0 && iv_show_back[e.interval])
+            output_id(ent[iv_back[e.interval]].id);
         term_depth = e.depth;
         hide_begin = span_lo;
         hide_end = span_hi;
