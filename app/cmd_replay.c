@@ -18,6 +18,7 @@ int tv_cmd_replay(int argc, char** argv)
     const char* out = "out/replay";
     unsigned res[2] = {640, 360}, pvs_res[2] = {0, 0};
     float fov = 60.0f, delta = 0.10f, fov_pvs = 0.0f, latency_ms = 50.0f, latency_factor = 0.0f;
+    float head_acc = 0.0f, head_ang_acc = 0.0f;
     float quantile = 0.99f, ipd = 0.063f, cpu_ms = 4.0f, rate = 90.0f, noise_mm = 0.2f, noise_deg = 0.02f;
     int every = 1, frames = 0, samples = 0, k = 0, seed = 1;
     bool noiseless = false, no_late_latch = false, no_plots = false, no_progress = false;
@@ -31,6 +32,8 @@ int tv_cmd_replay(int argc, char** argv)
         {"delta", TV_ARG_FLOAT, &delta, "M", "fixed policy: viewcell radius (default 0.10)"},
         {"fov-pvs", TV_ARG_FLOAT, &fov_pvs, "DEG", "fixed policy: PVS FOV, square frustum (default 90)"},
         {"quantile", TV_ARG_FLOAT, &quantile, "Q", "adaptive policy: error quantile (default 0.99)"},
+        {"head-acc", TV_ARG_FLOAT, &head_acc, "M/S2", "adaptive policy: physical bound's head acceleration (default 3)"},
+        {"head-ang-acc", TV_ARG_FLOAT, &head_ang_acc, "DEG/S2", "adaptive policy: its angular acceleration (default 1800)"},
         {"latency-ms", TV_ARG_FLOAT, &latency_ms, "MS", "fixed latency model: request to use (default 50)"},
         {"latency-factor", TV_ARG_FLOAT, &latency_factor, "F", "measured latency model: compute time x F (overrides --latency-ms)"},
         {"res", TV_ARG_RES, res, "WxH", "eye image resolution (default 640x360)"},
@@ -80,7 +83,7 @@ int tv_cmd_replay(int argc, char** argv)
     }
     if (every < 1 || frames < 0 || samples < 0 || k < 0 || !(fov > 1.0f && fov < 170.0f) || !(delta >= 0.0f) ||
         !(fov_pvs == 0.0f || (fov_pvs >= fov && fov_pvs < 179.0f)) || !(quantile > 0.0f && quantile <= 1.0f) ||
-        !(latency_ms >= 0.0f) || !(latency_factor >= 0.0f) || !(rate > 0.0f) || !(ipd >= 0.0f) ||
+        !(latency_ms >= 0.0f) || !(head_acc >= 0.0f) || !(head_ang_acc >= 0.0f) || !(latency_factor >= 0.0f) || !(rate > 0.0f) || !(ipd >= 0.0f) ||
         !(cpu_ms >= 0.0f && cpu_ms * 1e-3f < 1.0f / rate) || !(noise_mm >= 0.0f) || !(noise_deg >= 0.0f)) {
         fprintf(stderr, "trimvr replay: error: an option is out of range (see trimvr replay --help): need "
                         "--every >= 1, 1 < --fov < 170, --fov <= --fov-pvs < 179, 0 < --quantile <= 1, "
@@ -96,6 +99,8 @@ int tv_cmd_replay(int argc, char** argv)
     d.viewcell.fixed_delta_m = delta;
     d.viewcell.fixed_fov_pvs_deg = fov_pvs;
     d.viewcell.quantile = quantile;
+    d.viewcell.head_acc_mps2 = head_acc;
+    d.viewcell.head_ang_acc_dps2 = head_ang_acc;
     d.viewcell.ipd_m = ipd;
     d.viewcell.display_fov_h_deg = fov;
     d.viewcell.display_fov_v_deg = rnd_fov_y_from_x(fov, (float)res[0] / (float)res[1]);

@@ -33,6 +33,11 @@ static pred_viewcell_desc _resolve(const pred_viewcell_desc* in)
     d.warmup_records = d.warmup_records ? d.warmup_records : 50;
     d.warmup_pos_mps = _fdef(d.warmup_pos_mps, 1.0f);
     d.warmup_rot_dps = _fdef(d.warmup_rot_dps, 100.0f);
+    d.head_acc_mps2 = _fdef(d.head_acc_mps2, 3.0f);
+    d.head_speed_mps = _fdef(d.head_speed_mps, 1.5f);
+    d.head_ang_acc_dps2 = _fdef(d.head_ang_acc_dps2, 1800.0f);
+    d.head_ang_speed_dps = _fdef(d.head_ang_speed_dps, 400.0f);
+    d.predictor_lag_s = _fdef(d.predictor_lag_s, 0.0125f);
     return d;
 }
 
@@ -56,7 +61,7 @@ static double _alpha_for_rotation(double fh, double fv, double theta, bool* too_
     double n = sqrt(1.0 + th * th + tv * tv);
     double sx = sin(theta) * n / sqrt(1.0 + th * th);
     double sy = sin(theta) * n / sqrt(1.0 + tv * tv);
-    *too_wide = sx > 1.0 || sy > 1.0;
+    *too_wide = theta >= 0.5 * PRED_PI || sx > 1.0 || sy > 1.0;
     if (*too_wide)
         return 0.5 * PRED_PI;
     return fmax(fh + asin(sx), fv + asin(sy));
@@ -89,6 +94,7 @@ void pred_viewcell_from_poses(const pred_viewcell_desc* desc_in, const pred_pose
     out->rot_spread_deg = (float)spread;
 
     double alpha, delta;
+    out->frusta = 1;
     if (d.policy == PRED_POLICY_FIXED) {
         alpha = 0.5 * d.fixed_fov_pvs_deg * PRED_DEG;
         delta = d.fixed_delta_m;
@@ -97,10 +103,15 @@ void pred_viewcell_from_poses(const pred_viewcell_desc* desc_in, const pred_pose
         alpha = _alpha_for_rotation(0.5 * d.display_fov_h_deg * PRED_DEG, 0.5 * d.display_fov_v_deg * PRED_DEG,
                                     (spread + rot_err_deg) * PRED_DEG, &too_wide) + k_alpha_margin_rad;
         double lo = 0.5 * d.min_fov_pvs_deg * PRED_DEG, hi = 0.5 * d.max_fov_pvs_deg * PRED_DEG;
-        out->clamped = too_wide || alpha > hi;
-        alpha = fmin(fmax(alpha, lo), hi);
+        bool omni = (too_wide || alpha > hi) && !d.single_frustum;
+        out->clamped = (too_wide || alpha > hi) && d.single_frustum;
+        alpha = omni ? PRED_VC_OMNI_HALF_DEG * PRED_DEG : fmin(fmax(alpha, lo), hi);
+        out->frusta = omni ? PRED_VC_OMNI_FRUSTA : 1;
         /* eye e is inside iff a*tan(alpha) + r <= delta (a axial, r radial offset
-         * from v0); a ball of radius eps around it adds at most eps/cos(alpha) */
+         * from v0); a ball of radius eps around it adds at most eps/cos(alpha).
+         * Omni: every face's cone must hold every eye whatever the face's
+         * direction, i.e. the ball of radius max |e - v0| + eps, which a double
+         * cone contains iff delta >= radius / cos(alpha) */
         double need = 0.0;
         for (int i = 0; i < n; i++) {
             pred_pose eyes[2];
@@ -113,7 +124,7 @@ void pred_viewcell_from_poses(const pred_viewcell_desc* desc_in, const pred_pose
                 }
                 for (int k = 0; k < 3; k++)
                     r2 += (v[k] - a * f[k]) * (v[k] - a * f[k]);
-                need = fmax(need, fabs(a) * tan(alpha) + sqrt(r2));
+                need = fmax(need, omni ? sqrt(a * a + r2) / cos(alpha) : fabs(a) * tan(alpha) + sqrt(r2));
             }
         }
         delta = need + pos_err_m / cos(alpha) + k_delta_margin_m;
@@ -145,6 +156,29 @@ static uint64_t _records_at(const pred_error_tracker* tr, double horizon)
     return pos.count;
 }
 
+void pred_viewcell_physical_bound(const pred_viewcell_desc* desc, double horizon_s, double speed_mps,
+                                  double ang_speed_dps, double* pos_m, double* rot_deg)
+{
+    assert(desc && pos_m && rot_deg && horizon_s >= 0.0);
+    pred_viewcell_desc d = _resolve(desc);
+    double hl = horizon_s + d.predictor_lag_s;
+    *pos_m = fmin(0.5 * d.head_acc_mps2 * hl * hl, (speed_mps + d.head_speed_mps) * horizon_s);
+    *rot_deg = fmin(fmin(0.5 * d.head_ang_acc_dps2 * hl * hl, (ang_speed_dps + d.head_ang_speed_dps) * horizon_s),
+                    180.0);
+}
+
+/* Speeds of the predicted motion at the newest sample (finite difference
+ * over 10 ms of the prediction: what the predictor extrapolates with). */
+static void _current_speeds(const pred_predictor* p, double t, double* speed, double* ang_speed)
+{
+    const double dt = 0.01;
+    pred_pose a, b;
+    pred_predictor_predict(p, t, &a);
+    pred_predictor_predict(p, t + dt, &b);
+    *speed = pred_vec3_dist(a.p, b.p) / dt;
+    *ang_speed = pred_quat_angle_deg(a.q, b.q) / dt;
+}
+
 bool pred_viewcell_size(const pred_viewcell_desc* desc, const pred_predictor* predictor,
                         const pred_error_tracker* tracker, double t_request, pred_viewcell* out)
 {
@@ -159,33 +193,65 @@ bool pred_viewcell_size(const pred_viewcell_desc* desc, const pred_predictor* pr
     double t0 = t_request + d.latency_s;
     for (int i = 0; i < n; i++)
         pred_predictor_predict(predictor, t0 + d.window_s * i / (n - 1), &heads[i]);
-    double pos_err = 0.0, rot_err = 0.0;
+    double t_newest = pred_history_get(&predictor->history, 0)->t;
+    double horizon = t0 + d.window_s - t_newest;
+    double speed, ang_speed, pos_phys, rot_phys;
+    _current_speeds(predictor, t_newest, &speed, &ang_speed);
+    pred_viewcell_physical_bound(&d, horizon, speed, ang_speed, &pos_phys, &rot_phys);
+    /* the tracker says how well the predictor did on the motion so far; the
+     * physical bound covers what that motion did not show (a fast turn after
+     * a calm stretch): each bound is the larger of the two */
+    double pos_err = pos_phys, rot_err = rot_phys;
     if (tracker) {
-        double horizon = t0 + d.window_s - pred_history_get(&predictor->history, 0)->t;
-        pred_error_tracker_bound(tracker, horizon, d.quantile, &pos_err, &rot_err);
-        double pos_max, rot_max, rot_prior = d.warmup_rot_dps * horizon;
-        pred_error_tracker_bound(tracker, horizon, 1.0, &pos_max, &rot_max);
-        bool warm = _records_at(tracker, horizon) >= (uint64_t)d.warmup_records;
-        if (!warm)
+        double pos_q, rot_q;
+        pred_error_tracker_bound(tracker, horizon, d.quantile, &pos_q, &rot_q);
+        pos_err = fmax(pos_err, pos_q);
+        rot_err = fmax(rot_err, rot_q);
+        if (_records_at(tracker, horizon) < (uint64_t)d.warmup_records) {
             pos_err = fmax(pos_err, d.warmup_pos_mps * horizon);
-        /* A calm start teaches the tracker nothing about turns: its quantile
-         * would size the FOV for calm motion and the first fast turn would
-         * leave it. So the rotation prior holds until the window has seen an
-         * error as large as the prior itself. */
-        if (!warm || rot_max < rot_prior)
-            rot_err = fmax(rot_err, rot_prior);
+            rot_err = fmax(rot_err, d.warmup_rot_dps * horizon);
+        }
     }
     /* with an even count no sample sits at the middle: size around the nearer-to-middle one */
     pred_viewcell_from_poses(&d, heads, n, n / 2, pos_err, rot_err, out);
+    out->pos_phys_m = (float)pos_phys;
+    out->rot_phys_deg = (float)rot_phys;
     free(heads);
     return true;
 }
 
-bool pred_viewcell_contains(const pred_viewcell* vc, const double eye_p[3], const double eye_q[4],
-                            float eye_fov_h_deg, float eye_fov_v_deg, pred_viewcell_miss* why)
+void pred_viewcell_frustum(const pred_viewcell* vc, int i, pred_viewcell* out)
 {
-    pred_viewcell_miss miss = PRED_VC_COVERED;
-    double f[3], u[3], r[3], v[3], a = 0.0, uf = 0.0, r2 = 0.0;
+    assert(vc && out && i >= 0 && i < (vc->frusta > 1 ? vc->frusta : 1));
+    *out = *vc;
+    out->frusta = 1;
+    if (vc->frusta <= 1)
+        return;
+    double f[3], u[3], r[3];
+    for (int k = 0; k < 3; k++) {
+        f[k] = vc->forward[k];
+        u[k] = vc->up[k];
+    }
+    r[0] = f[1] * u[2] - f[2] * u[1];
+    r[1] = f[2] * u[0] - f[0] * u[2];
+    r[2] = f[0] * u[1] - f[1] * u[0];
+    /* faces: +-forward and +-right keep up; +-up take forward as their up */
+    const double* axis[3] = {f, r, u};
+    const double* face_up = i < 4 ? u : f;
+    double sign = (i & 1) ? -1.0 : 1.0;
+    for (int k = 0; k < 3; k++) {
+        double fk = sign * axis[i / 2][k];
+        out->forward[k] = (float)fk;
+        out->up[k] = (float)face_up[k];
+        out->apex[k] = (float)(vc->v0[k] - vc->z * fk);
+    }
+}
+
+/* Position part of the coverage test: inside the double cone. */
+static pred_viewcell_miss _cone_miss(const pred_viewcell* vc, const double eye_p[3], double f[3], double u[3],
+                                     double r[3])
+{
+    double v[3], a = 0.0, uf = 0.0, r2 = 0.0;
     for (int k = 0; k < 3; k++) {
         f[k] = vc->forward[k];
         u[k] = vc->up[k];
@@ -212,10 +278,24 @@ bool pred_viewcell_contains(const pred_viewcell* vc, const double eye_p[3], cons
         r2 += (v[k] - a * f[k]) * (v[k] - a * f[k]);
     a = fabs(a);
     if (a > vc->z)
-        miss = PRED_VC_MISS_AXIAL;
-    else if (sqrt(r2) > vc->delta * (1.0 - a / vc->z))
-        miss = PRED_VC_MISS_RADIAL;
-    else {
+        return PRED_VC_MISS_AXIAL;
+    if (sqrt(r2) > vc->delta * (1.0 - a / vc->z))
+        return PRED_VC_MISS_RADIAL;
+    return PRED_VC_COVERED;
+}
+
+bool pred_viewcell_contains(const pred_viewcell* vc, const double eye_p[3], const double eye_q[4],
+                            float eye_fov_h_deg, float eye_fov_v_deg, pred_viewcell_miss* why)
+{
+    double f[3], u[3], r[3];
+    pred_viewcell_miss miss = PRED_VC_COVERED;
+    if (vc->frusta > 1) {
+        for (int i = 0; i < vc->frusta && !miss; i++) {
+            pred_viewcell face;
+            pred_viewcell_frustum(vc, i, &face);
+            miss = _cone_miss(&face, eye_p, f, u, r);
+        }
+    } else if (!(miss = _cone_miss(vc, eye_p, f, u, r))) {
         /* inside the double cone means inside the PVS frustum from v*; a frustum
          * with its apex inside stays inside iff its edge directions do */
         double ta = tan(0.5 * vc->fov_pvs_deg * PRED_DEG);

@@ -10,7 +10,16 @@
  * An eye is covered when it lies inside the double cone and its (rectangular)
  * view frustum lies inside that square PVS frustum; docs/prediction.md
  * derives the sizing so that every predicted eye of the window is covered,
- * with margins for the tracked prediction errors. */
+ * with margins for the tracked prediction errors and for how far a head can
+ * physically deviate from its current motion within the horizon.
+ *
+ * When the rotation the window must allow exceeds what one frustum of at most
+ * max_fov_pvs can hold, the viewcell covers every direction instead
+ * (frusta = PRED_VC_OMNI_FRUSTA): six cube-face frusta of half-angle
+ * PRED_VC_OMNI_HALF_DEG about +-forward, +-right, +-up, each with its own
+ * double cone around v0, all of them containing the ball of radius
+ * delta cos(alpha) that holds every eye of the window. The PVS is the union
+ * of the per-frustum PVSs (pred_viewcell_frustum gives frustum i). */
 #ifndef TRIMVR_PRED_VIEWCELL_H
 #define TRIMVR_PRED_VIEWCELL_H
 
@@ -46,16 +55,25 @@ typedef struct pred_viewcell_desc {
     float max_fov_pvs_deg;   /* ADAPTIVE: 150 */
     /* ADAPTIVE warm-up: until the tracker holds warmup_records errors at the
      * sizing horizon, the error bounds are at least these rates times the
-     * horizon. A predictor that has just started extrapolates sensor noise,
-     * and an empty tracker would otherwise claim zero error. The rotation
-     * prior holds longer: until the tracker's window holds a rotation error
-     * at least as large as the prior (a calm start says nothing about turns;
-     * 100 deg/s matches the worst p99 of real people's heads at 50-100 ms,
-     * docs/prediction.md). */
+     * horizon (a predictor that has just started extrapolates sensor noise,
+     * and an empty tracker would otherwise claim zero error). */
     int warmup_records;      /* 50 */
     float warmup_pos_mps;    /* 1.0 m/s */
     float warmup_rot_dps;    /* 100 deg/s */
+    /* ADAPTIVE physical bound (pred_viewcell_physical_bound): the error bounds
+     * are at least how far a head can move / turn away from its current motion
+     * within the horizon h: min(acc/2 (h + lag)^2, (current speed + max speed) h).
+     * Defaults: fitted to the p99.9 deviation of recorded heads (docs/prediction.md). */
+    float head_acc_mps2;      /* 3 m/s^2 */
+    float head_speed_mps;     /* 1.5 m/s */
+    float head_ang_acc_dps2;  /* 1800 deg/s^2 */
+    float head_ang_speed_dps; /* 400 deg/s */
+    float predictor_lag_s;    /* 0.0125 s: the cv line fit's half window */
+    bool single_frustum;      /* ADAPTIVE: clamp to max_fov_pvs instead of going omni */
 } pred_viewcell_desc;
+
+#define PRED_VC_OMNI_FRUSTA 6
+#define PRED_VC_OMNI_HALF_DEG 46.0 /* 45 + 1 deg of overlap between neighbouring faces */
 
 typedef struct pred_viewcell {
     float v0[3];
@@ -71,7 +89,12 @@ typedef struct pred_viewcell {
     float pos_bound_m;    /* translation-error bound used */
     float rot_bound_deg;  /* rotation-error bound used */
     float rot_spread_deg; /* largest predicted rotation away from the window middle */
-    bool clamped;         /* ADAPTIVE: a min/max limit overrode the sizing */
+    float pos_phys_m;     /* the physical bounds at the sizing horizon (included in the bounds above) */
+    float rot_phys_deg;
+    int frusta;           /* 1: the frustum above; PRED_VC_OMNI_FRUSTA: every direction (delta,
+                             z, apex, fov_pvs_deg are then frustum 0's, the one about forward) */
+    bool clamped;         /* ADAPTIVE: a min/max limit overrode the sizing (with frusta == 1: the
+                             rotation needed more than max_fov_pvs and single_frustum was set) */
 } pred_viewcell;
 
 typedef enum pred_viewcell_miss {
@@ -93,18 +116,32 @@ const char* pred_viewcell_miss_name(pred_viewcell_miss miss);
 void pred_viewcell_from_poses(const pred_viewcell_desc* desc, const pred_pose* heads, int n, int mid,
                               double pos_err_m, double rot_err_deg, pred_viewcell* out);
 
+/* Physical bound at horizon h (s) for a head now moving at speed_mps and
+ * turning at ang_speed_dps: the larger deviation from its constant-velocity
+ * extrapolation it can reach, min(acc/2 (h + lag)^2, (speed + max speed) h),
+ * for position (m) and rotation (deg, at most 180). */
+void pred_viewcell_physical_bound(const pred_viewcell_desc* desc, double horizon_s, double speed_mps,
+                                  double ang_speed_dps, double* pos_m, double* rot_deg);
+
 /* Predicts the window's poses with `predictor` and sizes the viewcell; the
- * error bounds are the tracker's `quantile` at the horizon from the newest
- * sample to the window end, raised to the warm-up prior while the tracker has
- * too few records there, and the rotation bound also while no recorded
- * rotation error there reaches the prior (tracker may be NULL: zero bounds,
- * no prior). False when the predictor has no samples yet. */
+ * error bounds are the larger of the tracker's `quantile` and the physical
+ * bound (at the head's current speeds), both at the horizon from the newest
+ * sample to the window end, and at least the warm-up prior while the
+ * tracker has too few records there (tracker may be NULL: physical bound
+ * only). False when the predictor has no samples yet. */
 bool pred_viewcell_size(const pred_viewcell_desc* desc, const pred_predictor* predictor,
                         const pred_error_tracker* tracker, double t_request, pred_viewcell* out);
 
+/* Frustum i (0 <= i < vc->frusta) of a viewcell as a single-frustum one:
+ * a copy for frusta == 1; for an omni viewcell the cube face about forward,
+ * -forward, right, -right, up, -up (i = 0..5) with the same v0 and delta. */
+void pred_viewcell_frustum(const pred_viewcell* vc, int i, pred_viewcell* out);
+
 /* Coverage test of one eye: pose (position, orientation head-local -> world)
  * and its display FOV (full angles, degrees). `why` (may be NULL) receives
- * the first failed condition. */
+ * the first failed condition. An omni viewcell covers an eye inside every
+ * one of its double cones, whatever the eye's orientation: every ray from
+ * there lies in one of the faces' frusta. */
 bool pred_viewcell_contains(const pred_viewcell* vc, const double eye_p[3], const double eye_q[4],
                             float eye_fov_h_deg, float eye_fov_v_deg, pred_viewcell_miss* why);
 
