@@ -158,10 +158,12 @@ bool pvs_method_compute(pvs_method* m, const pvs_request* in, uint32_t** ids, ui
                         pvs_method_stats* stats, char* err, size_t err_size)
 {
     assert(m && in && ids && count);
-    double t0 = tv_now_ms();
-    pvs_method_stats st = {0};
     *ids = NULL;
     *count = 0;
+    if (in->vc.frusta > 1)
+        return pvs_method_compute_frusta(m, in, ids, count, stats, err, err_size);
+    double t0 = tv_now_ms();
+    pvs_method_stats st = {.frusta = 1};
     if (!_check_request(m, in, err, err_size))
         return false;
     pvs_request req = *in;

@@ -69,6 +69,7 @@ typedef struct pvs_request {
 typedef struct pvs_method_stats {
     double total_ms;       /* wall clock of pvs_method_compute */
     uint32_t views;        /* id-buffer views rendered (gt, sas, frompoint) */
+    uint32_t frusta;       /* frusta whose PVSs were joined (1, or vc.frusta when more) */
     pvs_stats tr;          /* tr only: per-phase timings, layers, k-buffer use */
 } pvs_method_stats;
 
@@ -88,9 +89,16 @@ pvs_method_kind pvs_method_kind_of(const pvs_method* m);
  * *count; the caller frees *ids). stats may be NULL. Fails (false, *ids
  * NULL, "METHOD: reason" in err) on an invalid viewcell, a frompoint request
  * without a current pose, a q3vis viewcell in no cluster, or a Vulkan or
- * memory failure. docs/evaluation.md ("Baselines") describes each method. */
+ * memory failure. docs/evaluation.md ("Baselines") describes each method.
+ * A viewcell of several frusta (req->vc.frusta > 1: every direction) gets
+ * the union of the PVSs of its frusta (pvs_method_compute_frusta). */
 bool pvs_method_compute(pvs_method* m, const pvs_request* req, uint32_t** ids, uint32_t* count,
                         pvs_method_stats* stats, char* err, size_t err_size);
+
+/* The union over the frusta of req->vc (pred_viewcell_frustum), one
+ * pvs_method_compute each; stats->frusta says how many. */
+bool pvs_method_compute_frusta(pvs_method* m, const pvs_request* req, uint32_t** ids, uint32_t* count,
+                               pvs_method_stats* stats, char* err, size_t err_size);
 
 #ifdef __cplusplus
 }
