@@ -215,6 +215,7 @@ static void draw_overlays(demo* m, double t)
             .pvs_compute_ms = cur->compute_ms,
             .delta_m = cur->vc.delta,
             .fov_pvs_deg = cur->vc.fov_pvs_deg,
+            .frusta = cur->vc.frusta,
             .pvs_tris = cur->count,
             .scene_tris = m->s.scene.triangle_count,
             .have_check = m->have_check,

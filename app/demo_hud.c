@@ -27,17 +27,21 @@ void tv_hud_draw(const tv_canvas* c, const tv_hud_info* in, int scale)
                  isinf(in->psnr_db) ? 0.0 : in->psnr_db, (unsigned long long)in->fn_pixels);
     else
         snprintf(check, sizeof check, "check: none yet (every %d frames)", in->check_every);
+    char frusta[48] = "";
+    if (in->frusta > 1)
+        snprintf(frusta, sizeof frusta, " in %d frusta (all directions)", in->frusta);
     char text[1024];
     snprintf(text, sizeof text,
              "%.1f fps (%.0f ms)  view %s%s  head %s %.1f m/s%s%s\n"
              "PVS #%u (%s): age %.0f ms, compute %.0f ms\n"
-             "delta %.3f m  PVS FOV %.1f deg  PVS %.1f%% of %u tris\n"
+             "delta %.3f m  PVS FOV %.1f deg%s  PVS %.1f%% of %u tris\n"
              "%s\n"
              "viewcell misses %llu / %llu frames  now %s\n"
              "H: help",
              in->fps, in->frame_ms, in->view, in->overview ? " + overview" : "", in->head, in->speed, in->frozen ? "  FROZEN" : "",
              in->viewcell_shown ? "  viewcell" : "", in->pvs_id, in->method, in->pvs_age_ms, in->pvs_compute_ms,
-             in->delta_m, in->fov_pvs_deg, in->scene_tris ? 100.0 * in->pvs_tris / in->scene_tris : 0.0,
+             in->delta_m, in->fov_pvs_deg, frusta,
+             in->scene_tris ? 100.0 * in->pvs_tris / in->scene_tris : 0.0,
              in->scene_tris, check, (unsigned long long)in->misses, (unsigned long long)in->frames,
              in->inside ? "inside" : "OUTSIDE");
     int w, h, pad = 3 * scale;

@@ -21,6 +21,7 @@ typedef struct tv_hud_info {
     uint32_t pvs_id;
     double pvs_age_ms, pvs_compute_ms;
     double delta_m, fov_pvs_deg;
+    int frusta;              /* of the PVS's viewcell: 1, or 6 for every direction */
     uint32_t pvs_tris, scene_tris;
     bool have_check;
     uint64_t check_frame;

@@ -159,30 +159,31 @@ static bool adopt(replay_state* st, tv_pvs_result* r, char* err, size_t err_size
     next.valid = true;
     slot_release(&st->current);
     st->current = next;
-    tv_replay_log_pvs(st->log, r->compute_ms);
+    tv_replay_log_pvs(st->log, r->compute_ms, r->vc.frusta);
     if (st->d->latency_model == TV_LATENCY_MEASURED) /* size the next window for what computing takes */
         st->latency_est_s = 0.7 * st->latency_est_s + 0.3 * r->compute_ms * 1e-3 * st->d->latency_factor;
     return true;
 }
 
-static bool evaluate_eye(replay_state* st, uint64_t frame, double t_frame, double t_submit, int e,
-                         const pred_pose* eye, const pred_pose* predicted_eye, char* err, size_t err_size)
+/* One frames.csv row for eye e; `render`: draw and compare the images, else
+ * a coverage-only row (an uncovered frame that --every skips). */
+static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_submit, int e, const pred_pose* eye,
+                    const pred_pose* predicted_eye, pred_viewcell_miss why, bool render, char* err, size_t err_size)
 {
     const pvs_slot* cur = &st->current;
     size_t pixels = (size_t)st->d->width * st->d->height;
-    rnd_camera cam = tv_camera_at_pose(eye, st->eye_fov_v, st->d->near_m, st->d->far_m);
-    rnd_draw_stats full_st, pvs_st;
-    if (!rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, NULL, 0, &full_st) ||
-        !rnd_target_read_color(st->s.ctx, st->target, st->rgba_full) ||
-        !rnd_target_read_ids(st->s.ctx, st->target, st->ids_full) ||
-        !rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, cur->r.ids, cur->r.count, &pvs_st) ||
-        !rnd_target_read_color(st->s.ctx, st->target, st->rgba_pvs)) {
-        snprintf(err, err_size, "rendering frame %llu failed (Vulkan error logged)", (unsigned long long)frame);
-        return false;
+    rnd_draw_stats full_st = {0}, pvs_st = {0};
+    if (render) {
+        rnd_camera cam = tv_camera_at_pose(eye, st->eye_fov_v, st->d->near_m, st->d->far_m);
+        if (!rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, NULL, 0, &full_st) ||
+            !rnd_target_read_color(st->s.ctx, st->target, st->rgba_full) ||
+            !rnd_target_read_ids(st->s.ctx, st->target, st->ids_full) ||
+            !rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, cur->r.ids, cur->r.count, &pvs_st) ||
+            !rnd_target_read_color(st->s.ctx, st->target, st->rgba_pvs)) {
+            snprintf(err, err_size, "rendering frame %llu failed (Vulkan error logged)", (unsigned long long)frame);
+            return false;
+        }
     }
-    pred_viewcell_miss why = PRED_VC_COVERED;
-    bool inside = pred_viewcell_contains(&cur->r.vc, eye->p, eye->q, st->d->viewcell.display_fov_h_deg,
-                                         st->eye_fov_v, &why);
     tv_frame_row row = {
         .frame = frame,
         .t = t_frame,
@@ -197,21 +198,25 @@ static bool evaluate_eye(replay_state* st, uint64_t frame, double t_frame, doubl
         .fov_pvs_deg = cur->r.vc.fov_pvs_deg,
         .pvs_id = cur->r.id,
         .pvs_age_ms = (t_submit - cur->r.t_request) * 1e3,
-        .inside = inside,
+        .inside = why == PRED_VC_COVERED,
         .miss_reason = miss_token(why),
         .pvs_tris = cur->r.count,
         .pvs_fraction = st->s.scene.triangle_count ? (double)cur->r.count / st->s.scene.triangle_count : 0.0,
-        .psnr_db = rnd_psnr_rgb8(st->rgba_full, st->rgba_pvs, pixels, 4),
-        .fn_pixels = rnd_count_fn_pixels(st->ids_full, pixels, cur->mask, st->s.scene.triangle_count),
-        .diff_pixels = rnd_count_diff_pixels(st->rgba_full, st->rgba_pvs, pixels, 4, 0),
         .pvs_compute_ms = cur->r.compute_ms,
+        .rendered = render,
+        .pvs_frusta = cur->r.vc.frusta,
+    };
+    if (render) {
+        row.psnr_db = rnd_psnr_rgb8(st->rgba_full, st->rgba_pvs, pixels, 4);
+        row.fn_pixels = rnd_count_fn_pixels(st->ids_full, pixels, cur->mask, st->s.scene.triangle_count);
+        row.diff_pixels = rnd_count_diff_pixels(st->rgba_full, st->rgba_pvs, pixels, 4, 0);
         /* GPU time where the device has timestamps: on a single-queue device
          * the wall clock would include waiting behind the PVS worker's work */
-        .render_pvs_ms = pvs_st.gpu_ms >= 0.0 ? pvs_st.gpu_ms : pvs_st.cpu_ms,
-        .render_full_ms = full_st.gpu_ms >= 0.0 ? full_st.gpu_ms : full_st.cpu_ms,
-    };
-    tv_worst_frame_offer(&st->worst, row.psnr_db, frame, e, st->rgba_full, st->rgba_pvs, st->ids_full, cur->mask,
-                         st->s.scene.triangle_count);
+        row.render_pvs_ms = pvs_st.gpu_ms >= 0.0 ? pvs_st.gpu_ms : pvs_st.cpu_ms;
+        row.render_full_ms = full_st.gpu_ms >= 0.0 ? full_st.gpu_ms : full_st.cpu_ms;
+        tv_worst_frame_offer(&st->worst, row.psnr_db, frame, e, st->rgba_full, st->rgba_pvs, st->ids_full, cur->mask,
+                             st->s.scene.triangle_count);
+    }
     if (!tv_replay_log_row(st->log, &row)) {
         snprintf(err, err_size, "%s/frames.csv: write failed", st->d->out_dir);
         return false;
@@ -259,12 +264,21 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
         predicted_at(&st->current, t_submit, &predicted_head);
         tv_replay_log_prediction(st->log, pred_vec3_dist(head.p, predicted_head.p),
                                  pred_quat_angle_deg(head.q, predicted_head.q));
-        if (k % (uint64_t)d->every == 0) {
-            pred_pose eyes[2], predicted_eyes[2];
-            hmd_eye_poses(&st->sim, &head, eyes);
+        /* coverage is cheap geometry: every display frame, whatever --every says */
+        pred_pose eyes[2], predicted_eyes[2];
+        pred_viewcell_miss why[2];
+        hmd_eye_poses(&st->sim, &head, eyes);
+        bool covered = true;
+        for (int e = 0; e < 2; e++)
+            covered &= pred_viewcell_contains(&st->current.r.vc, eyes[e].p, eyes[e].q,
+                                              d->viewcell.display_fov_h_deg, st->eye_fov_v, &why[e]);
+        tv_replay_log_coverage(st->log, covered);
+        bool render = k % (uint64_t)d->every == 0;
+        if (render || !covered) {
             hmd_eye_poses(&st->sim, &predicted_head, predicted_eyes);
             for (int e = 0; e < 2; e++)
-                if (!evaluate_eye(st, k, t_frame, t_submit, e, &eyes[e], &predicted_eyes[e], err, err_size))
+                if (!log_eye(st, k, t_frame, t_submit, e, &eyes[e], &predicted_eyes[e], why[e], render, err,
+                             err_size))
                     return false;
         }
         progress(st, k, frames, wall0);

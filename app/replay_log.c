@@ -30,17 +30,15 @@ struct tv_replay_log {
     FILE* csv;
     char csv_name[4200];
     series psnr, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
-    uint64_t rows, misses, identical;
+    uint64_t rows, misses, identical, coverage_frames, omni_pvs;
     double sum_mse;
-    uint64_t frames_missed_last; /* frame number of the last miss, to count frames not rows */
-    bool any_miss;
 };
 
 static const char* k_header =
     "frame,t,eye,px,py,pz,qx,qy,qz,qw,pose_age_ms,"
     "pred_px,pred_py,pred_pz,pred_qx,pred_qy,pred_qz,pred_qw,pred_err_pos_m,pred_err_rot_deg,pred_horizon_ms,"
     "delta_m,fov_pvs_deg,pvs_id,pvs_age_ms,inside_viewcell,miss_reason,pvs_tris,pvs_fraction,"
-    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms\n";
+    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,rendered,pvs_frusta\n";
 
 tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size)
 {
@@ -65,37 +63,50 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
 {
     const pred_pose* p = &r->pose;
     const pred_pose* q = &r->predicted;
+    /* psnr_db,fn_pixels,diff_pixels and the two render times: empty on a coverage-only row */
+    char image[160] = ",,", render[64] = ",";
+    if (r->rendered) {
+        snprintf(image, sizeof image, "%.3f,%llu,%llu", isinf(r->psnr_db) ? INFINITY : r->psnr_db,
+                 (unsigned long long)r->fn_pixels, (unsigned long long)r->diff_pixels);
+        snprintf(render, sizeof render, "%.3f,%.3f", r->render_pvs_ms, r->render_full_ms);
+    }
     int n = fprintf(log->csv,
                     "%llu,%.6f,%s,%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.3f,"
                     "%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.6f,%.4f,%.3f,"
                     "%.4f,%.3f,%u,%.3f,%d,%s,%u,%.6f,"
-                    "%.3f,%llu,%llu,%.3f,%.3f,%.3f\n",
+                    "%s,%.3f,%s,%d,%d\n",
                     (unsigned long long)r->frame, r->t, r->eye == 0 ? "left" : "right", p->p[0], p->p[1], p->p[2],
                     p->q[0], p->q[1], p->q[2], p->q[3], r->pose_age_ms, q->p[0], q->p[1], q->p[2], q->q[0], q->q[1],
                     q->q[2], q->q[3], r->pred_err_pos_m, r->pred_err_rot_deg, r->pred_horizon_ms, r->delta_m,
                     r->fov_pvs_deg, r->pvs_id, r->pvs_age_ms, r->inside ? 1 : 0, r->miss_reason, r->pvs_tris,
-                    r->pvs_fraction, isinf(r->psnr_db) ? INFINITY : r->psnr_db, (unsigned long long)r->fn_pixels,
-                    (unsigned long long)r->diff_pixels, r->pvs_compute_ms, r->render_pvs_ms, r->render_full_ms);
+                    r->pvs_fraction, image, r->pvs_compute_ms, render, r->rendered ? 1 : 0, r->pvs_frusta);
     /* flushing every row is what lets an interrupted replay keep its log */
     if (n < 0 || fflush(log->csv) != 0)
         return false;
+    if (!r->rendered)
+        return true;
     log->rows++;
     if (isinf(r->psnr_db))
         log->identical++;
     else
         log->sum_mse += 255.0 * 255.0 / pow(10.0, r->psnr_db / 10.0);
-    if (!r->inside && (!log->any_miss || log->frames_missed_last != r->frame)) {
-        log->misses++;
-        log->any_miss = true;
-        log->frames_missed_last = r->frame;
-    }
     return series_push(&log->psnr, r->psnr_db) && series_push(&log->fn, (double)r->fn_pixels) &&
            series_push(&log->pvs_fraction, r->pvs_fraction) && series_push(&log->delta, r->delta_m) &&
            series_push(&log->fov, r->fov_pvs_deg) && series_push(&log->render_full, r->render_full_ms) &&
            series_push(&log->render_pvs, r->render_pvs_ms) && series_push(&log->pose_age, r->pose_age_ms);
 }
 
-void tv_replay_log_pvs(tv_replay_log* log, double compute_ms) { series_push(&log->pvs_ms, compute_ms); }
+void tv_replay_log_coverage(tv_replay_log* log, bool covered)
+{
+    log->coverage_frames++;
+    log->misses += !covered;
+}
+
+void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta)
+{
+    series_push(&log->pvs_ms, compute_ms);
+    log->omni_pvs += frusta > 1;
+}
 
 void tv_replay_log_prediction(tv_replay_log* log, double pos_err_m, double rot_err_deg)
 {
@@ -172,11 +183,13 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         json_number(f, "psnr_p5_db", sm.psnr_p5, false);
         json_number(f, "fn_pixels_mean", sm.fn_mean, false);
         json_number(f, "fn_pixels_max", sm.fn_max, false);
+        fprintf(f, "  \"coverage_frames\": %llu,\n", (unsigned long long)log->coverage_frames);
         fprintf(f, "  \"viewcell_miss_frames\": %llu,\n", (unsigned long long)log->misses);
         json_number(f, "pvs_fraction_mean", sm.pvs_fraction, false);
         json_number(f, "delta_mean_m", sm.delta, false);
         json_number(f, "fov_pvs_mean_deg", sm.fov, false);
         fprintf(f, "  \"pvs_count\": %zu,\n", log->pvs_ms.n);
+        fprintf(f, "  \"omni_pvs_count\": %llu,\n", (unsigned long long)log->omni_pvs);
         json_number(f, "pvs_ms_mean", sm.pvs_ms, false);
         json_number(f, "pvs_ms_median", sm.pvs_ms_median, false);
         json_number(f, "render_full_ms_mean", sm.full_ms, false);
@@ -200,10 +213,12 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
                 (unsigned long long)log->identical);
         fprintf(table, " PSNR mean / p5 / min  %8.2f / %.2f / %.2f dB\n", sm.psnr_mean, sm.psnr_p5, sm.psnr_min);
         fprintf(table, " FN pixels mean / max  %8.2f / %.0f\n", sm.fn_mean, sm.fn_max);
-        fprintf(table, " viewcell misses       %8llu frames\n", (unsigned long long)log->misses);
+        fprintf(table, " viewcell misses       %8llu of %llu display frames (every frame checked)\n",
+                (unsigned long long)log->misses, (unsigned long long)log->coverage_frames);
         fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);
         fprintf(table, " delta / PVS FOV       %8.3f m / %.1f deg (means)\n", sm.delta, sm.fov);
-        fprintf(table, " PVS compute           %8.1f ms mean over %zu PVSs\n", sm.pvs_ms, log->pvs_ms.n);
+        fprintf(table, " PVS compute           %8.1f ms mean over %zu PVSs (%llu over all directions)\n", sm.pvs_ms,
+                log->pvs_ms.n, (unsigned long long)log->omni_pvs);
         fprintf(table, " render full / PVS     %8.2f / %.2f ms mean\n", sm.full_ms, sm.pvs_render_ms);
         fprintf(table, " prediction p99        %8.4f m / %.3f deg\n", sm.pred_pos_p99, sm.pred_rot_p99);
         fprintf(table, " wall time             %8.1f s\n", m->wall_s);

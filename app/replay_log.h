@@ -1,7 +1,8 @@
 /* replay_log.h - the replay's outputs: frames.csv (one row per evaluated
- * frame and eye, flushed row by row so an interrupted run keeps every
- * finished frame), the running summary, summary.json and the end-of-run
- * table. Column meanings: docs/replay.md. */
+ * frame and eye, plus unrendered rows for uncovered frames that were not
+ * evaluated; flushed row by row so an interrupted run keeps every finished
+ * frame), the running summary, summary.json and the end-of-run table. Column
+ * meanings: docs/replay.md. */
 #ifndef TRIMVR_APP_REPLAY_LOG_H
 #define TRIMVR_APP_REPLAY_LOG_H
 
@@ -32,6 +33,8 @@ typedef struct tv_frame_row {
     uint64_t diff_pixels;    /* pixels whose colour differs at all */
     double pvs_compute_ms;   /* wall clock of the PVS on the worker */
     double render_pvs_ms, render_full_ms;
+    bool rendered;           /* false: a coverage-only row, the image columns are empty */
+    int pvs_frusta;          /* frusta of the PVS's viewcell (1, or 6 for every direction) */
 } tv_frame_row;
 
 typedef struct tv_replay_log tv_replay_log;
@@ -39,11 +42,15 @@ typedef struct tv_replay_log tv_replay_log;
 /* Creates DIR/frames.csv with its header. NULL (message in err) on failure. */
 tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size);
 
-/* Appends and flushes one row; accumulates the summary. False on a write error. */
+/* Appends and flushes one row; accumulates the summary (rendered rows
+ * only). False on a write error. */
 bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* row);
 
+/* Per display frame: whether both eyes were covered by the viewcell. */
+void tv_replay_log_coverage(tv_replay_log* log, bool covered);
+
 /* Per-PVS accounting (once per delivered PVS). */
-void tv_replay_log_pvs(tv_replay_log* log, double compute_ms);
+void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta);
 
 /* Per display frame (not only evaluated ones): prediction error of the head
  * at the frame time relative to the PVS request's prediction, for the p99s. */

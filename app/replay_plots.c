@@ -134,7 +134,8 @@ void tv_replay_plots(const char* dir)
             "csv using %d:(column(%d) > 200 ? 100 : 1/0) skip 1 with points pt 1 ps 0.5 lc rgb 'grey' title 'identical (drawn at 100 dB)'\n"
             "set output 'plot_fn_pixels.png'\nset ylabel 'pixels'\n"
             "plot csv using %d:%d skip 1 with impulses title 'false-negative pixels', "
-            "csv using %d:(column(%d) == 0 ? column(%d) : 1/0) skip 1 with points pt 6 ps 0.8 lc rgb 'red' title 'viewcell miss'\n"
+            "csv using %d:(column(%d) == 0 ? (valid(%d) ? column(%d) : 0) : 1/0) skip 1 with points pt 6 ps 0.8 lc rgb 'red' "
+            "title 'viewcell miss (at 0 when not rendered)'\n"
             "set output 'plot_pvs_size.png'\nset ylabel '%% of scene'\n"
             "plot csv using %d:(100 * column(%d)) skip 1 with steps title 'PVS size'\n"
             "set output 'plot_delta.png'\nset ylabel 'delta (m)'\nset y2label 'PVS FOV (deg)'\nset y2tics\n"
@@ -145,7 +146,7 @@ void tv_replay_plots(const char* dir)
             "set output 'plot_timings.png'\nset ylabel 'ms'\n"
             "plot csv using %d:%d skip 1 with steps title 'PVS compute (wall)', csv using %d:%d skip 1 with lines title 'render full', "
             "csv using %d:%d skip 1 with lines title 'render PVS', csv using %d:%d skip 1 with lines title 'pose age'\n",
-            COL_T, COL_PSNR, COL_PSNR, COL_T, COL_PSNR, COL_T, COL_FN, COL_T, COL_INSIDE, COL_FN, COL_T, COL_PVS_FRACTION, COL_T, COL_DELTA,
+            COL_T, COL_PSNR, COL_PSNR, COL_T, COL_PSNR, COL_T, COL_FN, COL_T, COL_INSIDE, COL_FN, COL_FN, COL_T, COL_PVS_FRACTION, COL_T, COL_DELTA,
             COL_T, COL_FOV, COL_T, COL_PRED_POS, COL_T, COL_PRED_ROT, COL_T, COL_PVS_MS, COL_T, COL_RENDER_FULL,
             COL_T, COL_RENDER_PVS, COL_T, COL_POSE_AGE);
     tv_gnuplot_finish(f, dir, "plots.gp", "frames.csv and summary.json");
