@@ -220,6 +220,30 @@ bool pred_viewcell_size(const pred_viewcell_desc* desc, const pred_predictor* pr
     return true;
 }
 
+/* The viewcell's axes in double, re-orthonormalised (they are stored as
+ * float): forward f, up u, right r = f x u. */
+static void _frame(const pred_viewcell* vc, double f[3], double u[3], double r[3])
+{
+    double uf = 0.0;
+    for (int k = 0; k < 3; k++) {
+        f[k] = vc->forward[k];
+        u[k] = vc->up[k];
+    }
+    double fn = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (int k = 0; k < 3; k++)
+        f[k] /= fn;
+    for (int k = 0; k < 3; k++)
+        uf += u[k] * f[k];
+    for (int k = 0; k < 3; k++)
+        u[k] -= uf * f[k];
+    double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (int k = 0; k < 3; k++)
+        u[k] /= un;
+    r[0] = f[1] * u[2] - f[2] * u[1];
+    r[1] = f[2] * u[0] - f[0] * u[2];
+    r[2] = f[0] * u[1] - f[1] * u[0];
+}
+
 void pred_viewcell_frustum(const pred_viewcell* vc, int i, pred_viewcell* out)
 {
     assert(vc && out && i >= 0 && i < (vc->frusta > 1 ? vc->frusta : 1));
@@ -228,13 +252,7 @@ void pred_viewcell_frustum(const pred_viewcell* vc, int i, pred_viewcell* out)
     if (vc->frusta <= 1)
         return;
     double f[3], u[3], r[3];
-    for (int k = 0; k < 3; k++) {
-        f[k] = vc->forward[k];
-        u[k] = vc->up[k];
-    }
-    r[0] = f[1] * u[2] - f[2] * u[1];
-    r[1] = f[2] * u[0] - f[0] * u[2];
-    r[2] = f[0] * u[1] - f[1] * u[0];
+    _frame(vc, f, u, r);
     /* faces: +-forward and +-right keep up; +-up take forward as their up */
     const double* axis[3] = {f, r, u};
     const double* face_up = i < 4 ? u : f;
@@ -251,27 +269,10 @@ void pred_viewcell_frustum(const pred_viewcell* vc, int i, pred_viewcell* out)
 static pred_viewcell_miss _cone_miss(const pred_viewcell* vc, const double eye_p[3], double f[3], double u[3],
                                      double r[3])
 {
-    double v[3], a = 0.0, uf = 0.0, r2 = 0.0;
-    for (int k = 0; k < 3; k++) {
-        f[k] = vc->forward[k];
-        u[k] = vc->up[k];
+    double v[3], a = 0.0, r2 = 0.0;
+    _frame(vc, f, u, r);
+    for (int k = 0; k < 3; k++)
         v[k] = eye_p[k] - vc->v0[k];
-    }
-    /* re-orthonormalise the float frame */
-    double fn = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    for (int k = 0; k < 3; k++)
-        f[k] /= fn;
-    for (int k = 0; k < 3; k++)
-        uf += u[k] * f[k];
-    for (int k = 0; k < 3; k++)
-        u[k] -= uf * f[k];
-    double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (int k = 0; k < 3; k++)
-        u[k] /= un;
-    r[0] = f[1] * u[2] - f[2] * u[1];
-    r[1] = f[2] * u[0] - f[0] * u[2];
-    r[2] = f[0] * u[1] - f[1] * u[0];
-
     for (int k = 0; k < 3; k++)
         a += v[k] * f[k];
     for (int k = 0; k < 3; k++)

@@ -9,6 +9,7 @@
 #include "method.h"
 #include "procedural.h"
 #include "q3vis.h"
+#include "rng.h"
 #include "test.h"
 
 #include <math.h>
@@ -293,6 +294,79 @@ static void test_tr(void)
     pvs_method_destroy(m);
 }
 
+/* The all-directions PVS (pred_viewcell.frusta > 1) from v0 = (0, 1.5, -6.5),
+ * between W (behind v0) and B (ahead), with C off to the side and behind:
+ * the frustum about forward (-Z) alone sees B and the ground, never W or C.
+ * The union of the six faces' tr PVSs must hold every triangle any eye of
+ * the cell sees in any direction. */
+static void test_tr_all_directions(void)
+{
+    loaded* unit = &g_unit;
+    pred_pose heads[3]; /* a half turn over the window: too much for one frustum */
+    for (int i = 0; i < 3; i++) {
+        heads[i] = (pred_pose){.p = {0, 1.5, -6.5}};
+        pred_quat_from_ypr((i - 1) * 0.5 * PRED_PI, 0, 0, heads[i].q);
+    }
+    float fov_y = rnd_fov_y_from_x(60.0f, (float)W / (float)H);
+    pvs_request req = {.eye_fov_h_deg = 60.0f};
+    pred_viewcell_from_poses(&(pred_viewcell_desc){.policy = PRED_POLICY_ADAPTIVE, .display_fov_v_deg = fov_y}, heads,
+                             3, 1, 0.05, 2.0, &req.vc);
+    TV_CHECK(req.vc.frusta == PRED_VC_OMNI_FRUSTA);
+    pvs_method* m = create(unit, (pvs_method_desc){.kind = PVS_METHOD_TR, .tr = {.width = 128, .height = 128},
+                                                   .far_m = 80.0f});
+    uint32_t tris = unit->scene.triangle_count;
+    uint8_t *omni = malloc(tris), *front = malloc(tris);
+    pvs_method_stats st;
+    TV_CHECK(compute(m, unit, &req, omni, &st) && st.frusta == PRED_VC_OMNI_FRUSTA);
+    pvs_request one = req;
+    pred_viewcell_frustum(&req.vc, 0, &one.vc);
+    TV_CHECK(compute(m, unit, &one, front, &st) && st.frusta == 1);
+    printf("  tr all directions: %u triangles (%u in the front frustum alone) of %u\n", count_of(unit, omni),
+           count_of(unit, front), tris);
+    TV_CHECK(any_in(front, "box_b") && !any_in(front, "wall") && !any_in(front, "box_c"));
+    TV_CHECK(any_in(omni, "box_b") && any_in(omni, "wall") && any_in(omni, "box_c"));
+    for (uint32_t t = 0; t < tris; t++)
+        TV_CHECK(!front[t] || omni[t]);
+    /* eyes anywhere in the ball the cell was sized for: the first 8 yaw around
+     * the horizon in 45-degree steps, then random orientations */
+    pred_rng rng;
+    pred_rng_seed(&rng, 7, 8);
+    double radius = req.vc.delta * cos(PRED_VC_OMNI_HALF_DEG * PRED_DEG) * 0.999;
+    int missing = 0;
+    bool saw_wall = false, saw_c = false;
+    for (int v = 0; v < 40; v++) {
+        double p[3], q[4], r2;
+        do {
+            r2 = 0;
+            for (int k = 0; k < 3; k++) {
+                p[k] = pred_rng_range(&rng, -1, 1);
+                r2 += p[k] * p[k];
+            }
+        } while (r2 > 1.0);
+        for (int k = 0; k < 3; k++)
+            p[k] = req.vc.v0[k] + radius * p[k];
+        if (v < 8)
+            pred_quat_from_ypr(v * 0.25 * PRED_PI, 0, 0, q);
+        for (int k = 0; v >= 8 && k < 4; k++)
+            q[k] = pred_rng_range(&rng, -1, 1);
+        pred_quat_normalize(q);
+        TV_CHECK(pred_viewcell_contains(&req.vc, p, q, 60.0f, fov_y, NULL));
+        rnd_camera cam = {.position = {(float)p[0], (float)p[1], (float)p[2]},
+                          .orientation = {(float)q[0], (float)q[1], (float)q[2], (float)q[3]},
+                          .fov_y_deg = fov_y, .near_m = 0.05f, .far_m = 80.0f};
+        render_ids(unit, &cam, g_mask);
+        for (uint32_t t = 0; t < tris; t++)
+            missing += g_mask[t] && !omni[t];
+        saw_wall |= any_in(g_mask, "wall");
+        saw_c |= any_in(g_mask, "box_c");
+    }
+    printf("  40 views in every direction: %d visible triangles missing from the union\n", missing);
+    TV_CHECK(missing == 0 && saw_wall && saw_c);
+    free(omni);
+    free(front);
+    pvs_method_destroy(m);
+}
+
 static void test_bad_input(void)
 {
     loaded* unit = &g_unit;
@@ -400,6 +474,7 @@ int main(void)
     TV_TEST_RUN(test_frompoint);
     TV_TEST_RUN(test_frompoint_city);
     TV_TEST_RUN(test_tr);
+    TV_TEST_RUN(test_tr_all_directions);
     TV_TEST_RUN(test_bad_input);
     TV_TEST_RUN(test_q3vis_level);
     unload(&g_unit);
