@@ -53,7 +53,9 @@ typedef struct replay_state {
     pvs_slot current, pending; /* pending: the one in flight (its predictions) */
     pred_pose sample, latched;
     bool have_sample, have_latched;
-    double latency_est_s;
+    double latency_est_s; /* fixed model: the latency; measured: until the first PVS is timed */
+    double frustum_ms[8];  /* measured model: the last PVSs' compute times per frustum */
+    int timed;
     float eye_fov_v;
     char latency_name[64];
 } replay_state;
@@ -111,6 +113,23 @@ static const char* miss_token(pred_viewcell_miss why)
     return "unknown";
 }
 
+/* The start-up PVS's use window begins at its request (a zero latency_s
+ * would mean the viewcell desc's default, 50 ms). */
+static const double k_now_s = 1e-9;
+
+/* Latency of a PVS of `frusta` frusta: the fixed model's, or the slowest of
+ * the recent per-frustum compute times (a loaded machine's times vary by 2x:
+ * an average would size windows the next PVS outlasts) x frusta x factor. */
+static double latency_for(const replay_state* st, int frusta)
+{
+    if (st->d->latency_model == TV_LATENCY_FIXED || !st->timed)
+        return st->latency_est_s;
+    double ms = 0.0;
+    for (int i = 0; i < st->timed && i < 8; i++)
+        ms = ms > st->frustum_ms[i] ? ms : st->frustum_ms[i];
+    return ms * 1e-3 * frusta * st->d->latency_factor;
+}
+
 /* `first`: the start-up PVS is used from the first frame on, so its window
  * starts at the request instead of one latency later. */
 static bool submit_request(replay_state* st, double t_request, bool first, char* err, size_t err_size)
@@ -118,15 +137,22 @@ static bool submit_request(replay_state* st, double t_request, bool first, char*
     const tv_replay_desc* d = st->d;
     pred_viewcell_desc vd = d->viewcell;
     double frame_s = 1.0 / st->sim.desc.display_rate_hz;
-    /* requests go out back to back: this PVS is in use from its arrival until
-     * the next one arrives one latency later, plus a frame of slack */
-    vd.latency_s = first ? 0.0 : st->latency_est_s;
-    vd.window_s = (first ? 2.0 : 1.0) * st->latency_est_s + frame_s;
     pvs_request req;
     memset(&req, 0, sizeof req);
-    if (!pred_viewcell_size(&vd, &st->predictor, &st->tracker, t_request, &req.vc)) {
-        snprintf(err, err_size, "%s: no sensor sample before t = %.3f s", d->path, t_request);
-        return false;
+    /* requests go out back to back: this PVS is in use from its arrival until
+     * the next one arrives one latency later, plus a frame of slack. A PVS
+     * over all directions takes one compute per frustum: sized again for that
+     * latency (the longer horizon keeps it all-directions) */
+    for (int frusta = 1;; frusta = req.vc.frusta) {
+        double latency = latency_for(st, frusta);
+        vd.latency_s = first ? k_now_s : latency;
+        vd.window_s = (first ? 2.0 : 1.0) * latency + frame_s;
+        if (!pred_viewcell_size(&vd, &st->predictor, &st->tracker, t_request, &req.vc)) {
+            snprintf(err, err_size, "%s: no sensor sample before t = %.3f s", d->path, t_request);
+            return false;
+        }
+        if (req.vc.frusta == frusta || latency_for(st, req.vc.frusta) == latency)
+            break;
     }
     pvs_slot* p = &st->pending;
     p->pred_t0 = t_request;
@@ -159,9 +185,8 @@ static bool adopt(replay_state* st, tv_pvs_result* r, char* err, size_t err_size
     next.valid = true;
     slot_release(&st->current);
     st->current = next;
-    tv_replay_log_pvs(st->log, r->compute_ms, r->vc.frusta);
-    if (st->d->latency_model == TV_LATENCY_MEASURED) /* size the next window for what computing takes */
-        st->latency_est_s = 0.7 * st->latency_est_s + 0.3 * r->compute_ms * 1e-3 * st->d->latency_factor;
+    tv_replay_log_pvs(st->log, r->compute_ms, r->vc.frusta, r->vc.clamped);
+    st->frustum_ms[st->timed++ % 8] = r->compute_ms / (r->vc.frusta > 1 ? r->vc.frusta : 1);
     return true;
 }
 
@@ -320,17 +345,23 @@ static bool setup(replay_state* st, char* err, size_t err_size)
 }
 
 /* The first PVS is computed before the display starts (a headset shows
- * nothing until it has one); its request time is the first frame's. */
+ * nothing until it has one); its request time is the first frame's. With the
+ * measured latency model the first compute only times the machine: its
+ * window assumed 50 ms, so a second one, sized for the measured latency,
+ * is what the display starts with. */
 static bool first_pvs(replay_state* st, char* err, size_t err_size)
 {
     double t0 = hmd_display_time(&st->sim, 0) + st->d->cpu_ms * 1e-3;
     st->have_sample = hmd_sim_next(&st->sim, &st->sample);
     feed_samples(st, t0);
-    if (!submit_request(st, t0, true, err, err_size))
-        return false;
-    tv_pvs_result r;
-    int rc = tv_worker_wait(st->worker, &r, err, err_size);
-    return rc == 1 && adopt(st, &r, err, err_size);
+    int computes = st->d->latency_model == TV_LATENCY_MEASURED ? 2 : 1;
+    for (int i = 0; i < computes; i++) {
+        tv_pvs_result r;
+        if (!submit_request(st, t0, true, err, err_size) || tv_worker_wait(st->worker, &r, err, err_size) != 1 ||
+            !adopt(st, &r, err, err_size))
+            return false;
+    }
+    return true;
 }
 
 static void teardown(replay_state* st)

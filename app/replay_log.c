@@ -30,7 +30,7 @@ struct tv_replay_log {
     FILE* csv;
     char csv_name[4200];
     series psnr, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
-    uint64_t rows, misses, identical, coverage_frames, omni_pvs;
+    uint64_t rows, misses, identical, coverage_frames, omni_pvs, clamped_pvs;
     double sum_mse;
 };
 
@@ -102,10 +102,11 @@ void tv_replay_log_coverage(tv_replay_log* log, bool covered)
     log->misses += !covered;
 }
 
-void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta)
+void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta, bool clamped)
 {
     series_push(&log->pvs_ms, compute_ms);
     log->omni_pvs += frusta > 1;
+    log->clamped_pvs += clamped;
 }
 
 void tv_replay_log_prediction(tv_replay_log* log, double pos_err_m, double rot_err_deg)
@@ -190,6 +191,7 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         json_number(f, "fov_pvs_mean_deg", sm.fov, false);
         fprintf(f, "  \"pvs_count\": %zu,\n", log->pvs_ms.n);
         fprintf(f, "  \"omni_pvs_count\": %llu,\n", (unsigned long long)log->omni_pvs);
+        fprintf(f, "  \"clamped_pvs_count\": %llu,\n", (unsigned long long)log->clamped_pvs);
         json_number(f, "pvs_ms_mean", sm.pvs_ms, false);
         json_number(f, "pvs_ms_median", sm.pvs_ms_median, false);
         json_number(f, "render_full_ms_mean", sm.full_ms, false);
@@ -217,8 +219,8 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
                 (unsigned long long)log->misses, (unsigned long long)log->coverage_frames);
         fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);
         fprintf(table, " delta / PVS FOV       %8.3f m / %.1f deg (means)\n", sm.delta, sm.fov);
-        fprintf(table, " PVS compute           %8.1f ms mean over %zu PVSs (%llu over all directions)\n", sm.pvs_ms,
-                log->pvs_ms.n, (unsigned long long)log->omni_pvs);
+        fprintf(table, " PVS compute           %8.1f ms mean over %zu PVSs (%llu over all directions, %llu clamped)\n",
+                sm.pvs_ms, log->pvs_ms.n, (unsigned long long)log->omni_pvs, (unsigned long long)log->clamped_pvs);
         fprintf(table, " render full / PVS     %8.2f / %.2f ms mean\n", sm.full_ms, sm.pvs_render_ms);
         fprintf(table, " prediction p99        %8.4f m / %.3f deg\n", sm.pred_pos_p99, sm.pred_rot_p99);
         fprintf(table, " wall time             %8.1f s\n", m->wall_s);

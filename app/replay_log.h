@@ -50,7 +50,7 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* row);
 void tv_replay_log_coverage(tv_replay_log* log, bool covered);
 
 /* Per-PVS accounting (once per delivered PVS). */
-void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta);
+void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta, bool clamped);
 
 /* Per display frame (not only evaluated ones): prediction error of the head
  * at the frame time relative to the PVS request's prediction, for the p99s. */
