@@ -33,7 +33,7 @@ int tv_cmd_replay(int argc, char** argv)
         {"fov-pvs", TV_ARG_FLOAT, &fov_pvs, "DEG", "fixed policy: PVS FOV, square frustum (default 90)"},
         {"quantile", TV_ARG_FLOAT, &quantile, "Q", "adaptive policy: error quantile (default 0.99)"},
         {"head-acc", TV_ARG_FLOAT, &head_acc, "M/S2", "adaptive policy: physical bound's head acceleration (default 3)"},
-        {"head-ang-acc", TV_ARG_FLOAT, &head_ang_acc, "DEG/S2", "adaptive policy: its angular acceleration (default 1800)"},
+        {"head-ang-acc", TV_ARG_FLOAT, &head_ang_acc, "DEG/S2", "adaptive policy: its angular acceleration (default 2100)"},
         {"latency-ms", TV_ARG_FLOAT, &latency_ms, "MS", "fixed latency model: request to use (default 50)"},
         {"latency-factor", TV_ARG_FLOAT, &latency_factor, "F", "measured latency model: compute time x F (overrides --latency-ms)"},
         {"res", TV_ARG_RES, res, "WxH", "eye image resolution (default 640x360)"},

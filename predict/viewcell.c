@@ -35,7 +35,7 @@ static pred_viewcell_desc _resolve(const pred_viewcell_desc* in)
     d.warmup_rot_dps = _fdef(d.warmup_rot_dps, 100.0f);
     d.head_acc_mps2 = _fdef(d.head_acc_mps2, 3.0f);
     d.head_speed_mps = _fdef(d.head_speed_mps, 1.5f);
-    d.head_ang_acc_dps2 = _fdef(d.head_ang_acc_dps2, 1800.0f);
+    d.head_ang_acc_dps2 = _fdef(d.head_ang_acc_dps2, 2100.0f);
     d.head_ang_speed_dps = _fdef(d.head_ang_speed_dps, 400.0f);
     d.predictor_lag_s = _fdef(d.predictor_lag_s, 0.0125f);
     return d;

@@ -66,7 +66,7 @@ typedef struct pred_viewcell_desc {
      * Defaults: fitted to the p99.9 deviation of recorded heads (docs/prediction.md). */
     float head_acc_mps2;      /* 3 m/s^2 */
     float head_speed_mps;     /* 1.5 m/s */
-    float head_ang_acc_dps2;  /* 1800 deg/s^2 */
+    float head_ang_acc_dps2;  /* 2100 deg/s^2 */
     float head_ang_speed_dps; /* 400 deg/s */
     float predictor_lag_s;    /* 0.0125 s: the cv line fit's half window */
     bool single_frustum;      /* ADAPTIVE: clamp to max_fov_pvs instead of going omni */
