@@ -30,14 +30,9 @@ else
     echo "latency-sweep: $trace missing: the city walk only" >&2
 fi
 
-# one summary.json value (a number or null)
-value() {
-    sed -n "s/^ *\"$2\": *\([^,]*\),*$/\1/p" "$1" | head -n 1
-}
-
 table=$OUT/sweep.md
 data=$OUT/sweep.dat
-printf '| path | latency | misses / frames checked | PSNR mean / p5 dB | FN px mean | PVS %% | Δ cm | PVS FOV ° | PVSs (all directions, clamped) | PVS ms |\n' >"$table"
+printf '| path | latency | misses / frames checked | PSNR mean / p5 dB | FN px mean | PVS %% | Δ cm | PVS FOV ° | PVSs (all directions, clamped) | PVS ms mean |\n' >"$table"
 printf '|---|---|---|---|---|---|---|---|---|---|\n' >>"$table"
 : >"$data"
 i=0
@@ -55,26 +50,21 @@ for p in $paths; do
             --no-plots --no-progress --out "$dir" >"$dir.log" 2>&1 || echo "latency-sweep: $dir failed (see $dir.log)" >&2
         j=$dir/summary.json
         [ -f "$j" ] || continue
-        misses=$(value "$j" viewcell_miss_frames)
-        checked=$(value "$j" coverage_frames)
-        psnr=$(value "$j" psnr_mean_db)
-        p5=$(value "$j" psnr_p5_db)
-        fn=$(value "$j" fn_pixels_mean)
-        frac=$(value "$j" pvs_fraction_mean)
-        delta=$(value "$j" delta_mean_m)
-        fov=$(value "$j" fov_pvs_mean_deg)
-        count=$(value "$j" pvs_count)
-        omni=$(value "$j" omni_pvs_count)
-        clamped=$(value "$j" clamped_pvs_count)
-        ms=$(value "$j" pvs_ms_mean)
-        awk -v n="$name" -v l="$lat" -v m="$misses" -v c="$checked" -v ps="$psnr" -v p5="$p5" -v fn="$fn" -v fr="$frac" \
-            -v d="$delta" -v fo="$fov" -v k="$count" -v o="$omni" -v cl="$clamped" -v ms="$ms" 'BEGIN {
-            printf "| %s | %s | %s / %s | %s / %s | %.1f | %.2f | %.1f | %.1f | %s (%s, %s) | %.0f |\n",
-                n, l, m, c, (ps == "null" ? "inf" : sprintf("%.1f", ps)), (p5 == "null" ? "inf" : sprintf("%.1f", p5)),
-                fn, 100 * fr, 100 * d, fo, k, o, cl, ms }' >>"$table"
-        # gnuplot rows: index, label, misses, PSNR mean (100 when identical), PVS %
-        awk -v i="$i" -v n="$name" -v l="$lat" -v m="$misses" -v ps="$psnr" -v fr="$frac" 'BEGIN {
-            printf "%d \"%s %s\" %s %s %.3f\n", i, n, l, m, (ps == "null" ? 100 : ps), 100 * fr }' >>"$data"
+        # one table row and one gnuplot row (index, label, misses, PSNR mean with 100 for
+        # identical, PVS %) from summary.json's "key": value lines
+        awk -v n="$name" -v l="$lat" -v i="$i" -v table="$table" -v data="$data" '
+            /^ *"[a-z_0-9]+": / { k = $0; sub(/^ *"/, "", k); sub(/".*/, "", k)
+                                  v = $0; sub(/^[^:]*: */, "", v); sub(/,$/, "", v); s[k] = v }
+            END {
+                ps = s["psnr_mean_db"]; p5 = s["psnr_p5_db"]
+                printf "| %s | %s | %s / %s | %s / %s | %.1f | %.2f | %.1f | %.1f | %s (%s, %s) | %.0f |\n",
+                    n, l, s["viewcell_miss_frames"], s["coverage_frames"],
+                    (ps == "null" ? "inf" : sprintf("%.1f", ps)), (p5 == "null" ? "inf" : sprintf("%.1f", p5)),
+                    s["fn_pixels_mean"], 100 * s["pvs_fraction_mean"], 100 * s["delta_mean_m"], s["fov_pvs_mean_deg"],
+                    s["pvs_count"], s["omni_pvs_count"], s["clamped_pvs_count"], s["pvs_ms_mean"] >>table
+                printf "%d \"%s %s\" %s %s %.3f\n", i, n, l, s["viewcell_miss_frames"], (ps == "null" ? 100 : ps),
+                    100 * s["pvs_fraction_mean"] >>data
+            }' "$j"
         i=$((i + 1))
     done
 done
