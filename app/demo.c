@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 typedef struct demo {
     const tv_demo_desc* d;
@@ -407,7 +408,7 @@ static bool setup(demo* m, char* err, size_t err_size)
     pred_pose start;
     start_pose(m, &start);
     tv_head_init(&m->head, &start);
-    m->follow = m->path.count > 0;
+    m->follow = d->path != NULL;
     start.t = 0.0;
     if (!tv_pvs_pipeline_start(&m->pvs, &d->pvs, m->s.ctx, &m->s.scene, m->s.gpu, err, err_size))
         return false;
@@ -439,6 +440,23 @@ static void summary(const demo* m, double wall_s)
            pvs_method_name(m->d->pvs.method.kind), (unsigned long long)m->misses, m->d->fov_h_deg, m->fov_v_deg);
 }
 
+/* Without a path, start position or heading the head starts where the scene's
+ * bundled walk does (paths/NAME-walk.csv for builtin:NAME or NAME), looking
+ * into the scene: its bounds centre may be inside a wall. The walk stays
+ * loaded for T (follow the path). */
+static void bundled_walk(const char* spec, pred_path* out)
+{
+    const char* name = strncmp(spec, "builtin:", 8) == 0 ? spec + 8 : spec;
+    char rel[256], buf[4096], err[512];
+    if (strpbrk(name, "/:.") || snprintf(rel, sizeof rel, "paths/%s-walk.csv", name) >= (int)sizeof rel)
+        return;
+    const char* file = tv_bundled_file(rel, buf, sizeof buf);
+    if (access(file, R_OK) != 0 || !pred_path_load(file, out, err, sizeof err))
+        return;
+    if (strcmp(out->scene, spec) != 0)
+        pred_path_free(out);
+}
+
 int tv_demo_run(const tv_demo_desc* d)
 {
     char err[768] = "";
@@ -454,6 +472,8 @@ int tv_demo_run(const tv_demo_desc* d)
         return 1;
     }
     const char* spec = d->scene ? d->scene : m.path.scene[0] ? m.path.scene : "builtin:interior";
+    if (!d->path && !d->have_start && d->start_yaw_deg == 0.0f)
+        bundled_walk(spec, &m.path);
     if (!tv_window_system_init(err, sizeof err)) {
         fprintf(stderr, "trimvr demo: error: %s; the demo needs a display: run 'trimvr replay' for the headless "
                         "loop, or run it under Xvfb: xvfb-run -a build/trimvr demo ...\n", err);

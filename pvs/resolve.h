@@ -2,7 +2,7 @@
  * reference the P3 compute shader mirrors line by line (paper section 4.3).
  *
  * Data layout (per pixel, as on the GPU): four k-buffers with fixed
- * capacities from shaders/config.h, each with an atomic counter that P2
+ * capacities from shaders/pvs_shared.h, each with an atomic counter that P2
  * increments for every fragment, also past the capacity: a counter above its
  * K is how P3 knows the list overflowed. Trim and umbra fragments carry the
  * id of the silhouette edge that produced them (the trim-region id, unique
@@ -92,7 +92,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "config.h"
+#include "pvs_shared.h"
 
 #ifdef __cplusplus
 extern "C" {
