@@ -7,7 +7,7 @@
  *
  * Contract in short:
  * - Per pixel and layer, four k-buffers (fronts, backs, trims, umbrae) of
- *   TV_K_* entries (shaders/config.h) whose counters run past K: a count
+ *   TV_K_* entries (shaders/pvs_shared.h) whose counters run past K: a count
  *   above K means the list overflowed. Trims and umbrae carry their
  *   trim-region id, unique within one PVS computation, which pairs them.
  * - Depths are any value monotonic along the pixel's ray from v*.
@@ -24,7 +24,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "config.h"
+#include "pvs_shared.h"
 
 #ifdef __cplusplus
 extern "C" {

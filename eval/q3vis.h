@@ -14,8 +14,8 @@
  * takes any bytes: malformed input gives a one-line "FILE: problem" error and
  * an empty structure, never a crash.
  */
-#ifndef TRIMVR_PVS_Q3VIS_H
-#define TRIMVR_PVS_Q3VIS_H
+#ifndef TRIMVR_EVAL_Q3VIS_H
+#define TRIMVR_EVAL_Q3VIS_H
 
 #include "scene.h"
 

@@ -1,8 +1,8 @@
 /* cli_viewcell.h - viewcells given on the command line (`trimvr pvs`,
  * `trimvr eval`, `trimvr bench`): a centre, a view direction, Δ and the two
  * FOVs, with no prediction involved. */
-#ifndef TRIMVR_APP_CLI_VIEWCELL_H
-#define TRIMVR_APP_CLI_VIEWCELL_H
+#ifndef TRIMVR_EVAL_CLI_VIEWCELL_H
+#define TRIMVR_EVAL_CLI_VIEWCELL_H
 
 #include "path.h"
 #include "viewcell.h"

@@ -1,18 +1,21 @@
-/* vk_internal.h - the Vulkan objects behind rnd_context and the helpers the
- * render and pvs modules record their passes with. Not a public header: only
- * render/ and pvs/ include it.
+/* render_vk.h - the interface for GPU modules: the Vulkan objects behind
+ * rnd_context and the helpers to record passes with (streams, the shared
+ * queue, buffers, images, pipelines from embedded SPIR-V). render.h is what
+ * the rest of the program uses; a module that records its own Vulkan passes
+ * on the renderer's device (pvs/) includes this header as well.
  *
  * Threading: lavapipe exposes one queue, so every submission goes through
  * rnd_submit (mutex-guarded). Each thread records into its own rnd_stream
  * (command pool + command buffer + fence + timestamp pair); a stream must
  * never be used by two threads at once. */
-#ifndef TRIMVR_RENDER_VK_INTERNAL_H
-#define TRIMVR_RENDER_VK_INTERNAL_H
+#ifndef TRIMVR_RENDER_VK_H
+#define TRIMVR_RENDER_VK_H
 
 #include "render.h"
 #include "vk_check.h"
 
 #include <pthread.h>
+#include <stddef.h>
 #include <stdatomic.h>
 #include <vulkan/vulkan.h>
 
@@ -159,11 +162,13 @@ void rnd_mesh_pipeline_destroy(rnd_context* ctx);
 #define RND_ID_FORMAT VK_FORMAT_R32_UINT
 #define RND_DEPTH_FORMAT VK_FORMAT_D32_SFLOAT
 
-/* Push constants of the mesh pass; layout mirrors mesh_common.glsl. */
+/* Push constants of the mesh pass; layout mirrors mesh_push.glsl. */
 typedef struct rnd_mesh_push {
     float view_proj[16];
     uint32_t use_draw_ids; /* 0: triangle = draw slot, 1: triangle = draw_ids[slot] */
 } rnd_mesh_push;
+_Static_assert(offsetof(rnd_mesh_push, use_draw_ids) == 64 && sizeof(rnd_mesh_push) == 68,
+               "rnd_mesh_push must match tv_mesh_push in mesh_push.glsl");
 
 /* Records the upload of every scene texture as one layer of a 2D array
  * image (a single white layer when there are none); see textures.c. */

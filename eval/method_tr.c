@@ -19,14 +19,10 @@ static void _destroy(pvs_method* m)
 static bool _compute(pvs_method* m, const pvs_request* req, uint32_t** ids, uint32_t* count,
                      pvs_method_stats* stats, char* err, size_t err_size)
 {
-    const pred_viewcell* v = &req->vc;
-    pvs_viewcell vc = {.delta = v->delta, .fov_target_deg = v->fov_target_deg, .fov_pvs_deg = v->fov_pvs_deg,
-                       .far_m = m->desc.far_m};
-    memcpy(vc.v0, v->v0, sizeof vc.v0);
-    memcpy(vc.forward, v->forward, sizeof vc.forward);
-    memcpy(vc.up, v->up, sizeof vc.up);
+    pvs_viewcell vc;
     pvs_result r;
-    if (!pvs_compute(m->impl, &vc, &r, err, err_size))
+    if (!pvs_viewcell_from_pred(&req->vc, m->desc.far_m, &vc, err, err_size) ||
+        !pvs_compute(m->impl, &vc, &r, err, err_size))
         return false;
     /* the context's list lives only until its next compute: the caller owns a copy */
     *ids = malloc((r.count ? r.count : 1) * sizeof(uint32_t));

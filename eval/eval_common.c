@@ -84,14 +84,6 @@ static int by_area_desc(const void* a, const void* b)
     return (x < y) - (x > y);
 }
 
-void tv_eval_pvs_json_of(const char* spec, char* buf, size_t size)
-{
-    tv_resolve_scene_spec(spec, buf, size - 16);
-    char* dot = strrchr(buf, '.');
-    if (dot)
-        strcpy(dot, ".pvs.json");
-}
-
 int tv_eval_floor_points(const scn_scene* scene, const char* pvs_json, int max_cells, float* pos, float* dir,
                          char* err, size_t err_size)
 {
@@ -173,8 +165,9 @@ pvs_request tv_eval_request(const tv_eval_cell* c, float eye_fov_deg)
     return req;
 }
 
-bool tv_eval_cell_run(pvs_method* m, const tv_app_scene* s, const pvs_eval_desc* ed, float eye_fov_deg,
-                      tv_eval_cell* c, uint8_t* mask, uint8_t* gt, char* err, size_t err_size)
+bool tv_eval_cell_run(pvs_method* m, rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu,
+                      const pvs_eval_desc* ed, float eye_fov_deg, tv_eval_cell* c, uint8_t* mask, uint8_t* gt,
+                      char* err, size_t err_size)
 {
     pvs_request req = tv_eval_request(c, eye_fov_deg);
     uint32_t* ids = NULL;
@@ -182,10 +175,10 @@ bool tv_eval_cell_run(pvs_method* m, const tv_app_scene* s, const pvs_eval_desc*
     if (!pvs_method_compute(m, &req, &ids, &count, &c->st, err, err_size))
         return false;
     c->pvs_ms = c->st.total_ms;
-    memset(mask, 0, s->scene.triangle_count);
+    memset(mask, 0, scene->triangle_count);
     for (uint32_t t = 0; t < count; t++)
         mask[ids[t]] = 1;
-    bool ok = pvs_evaluate(s->ctx, s->gpu, &s->scene, &c->vc, mask, ids, count, ed, gt, &c->m, err, err_size);
+    bool ok = pvs_evaluate(rnd, gpu, scene, &c->vc, mask, ids, count, ed, gt, &c->m, err, err_size);
     free(ids);
     return ok;
 }

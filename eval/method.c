@@ -119,31 +119,14 @@ pvs_method_kind pvs_method_kind_of(const pvs_method* m)
     return m->kind;
 }
 
-static bool _finite3(const float v[3])
-{
-    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
-}
-
 static bool _check_request(const pvs_method* m, const pvs_request* req, char* err, size_t err_size)
 {
     const pred_viewcell* vc = &req->vc;
     const char* name = pvs_method_name(m->kind);
-    float f2 = vc->forward[0] * vc->forward[0] + vc->forward[1] * vc->forward[1] + vc->forward[2] * vc->forward[2];
-    float c[3] = {vc->forward[1] * vc->up[2] - vc->forward[2] * vc->up[1],
-                  vc->forward[2] * vc->up[0] - vc->forward[0] * vc->up[2],
-                  vc->forward[0] * vc->up[1] - vc->forward[1] * vc->up[0]};
-    if (!_finite3(vc->v0) || !_finite3(vc->forward) || !_finite3(vc->up) || !(f2 > 0.0f) ||
-        !(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] > 1e-12f * f2)) {
-        snprintf(err, err_size, "%s: viewcell has a non-finite centre or axis, a zero forward or up parallel to it",
-                 name);
-        return false;
-    }
-    if (!(vc->delta >= 0.0f) || !isfinite(vc->delta) || !(vc->z >= 0.0f) || !isfinite(vc->z)) {
-        snprintf(err, err_size, "%s: viewcell delta %g / z %g must be finite and >= 0", name, vc->delta, vc->z);
-        return false;
-    }
-    if (!(vc->fov_pvs_deg > 0.0f && vc->fov_pvs_deg < 180.0f)) {
-        snprintf(err, err_size, "%s: viewcell fov_pvs %g deg outside (0, 180)", name, vc->fov_pvs_deg);
+    pvs_viewcell checked;
+    char why[256];
+    if (!pvs_viewcell_from_pred(vc, m->desc.far_m, &checked, why, sizeof why)) {
+        snprintf(err, err_size, "%s: %s", name, why);
         return false;
     }
     float eye = req->eye_fov_h_deg > 0.0f ? req->eye_fov_h_deg : vc->fov_target_deg;

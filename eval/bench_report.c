@@ -1,6 +1,6 @@
 #include "bench_report.h"
 
-#include "replay_plots.h"
+#include "gnuplot.h"
 
 #include "log.h"
 

@@ -3,8 +3,8 @@
  * false positives blue, the rest grey) from the viewcell centre and from an
  * overview camera behind and above it, and the worst ground-truth view with
  * its false-negative pixels in red. */
-#ifndef TRIMVR_APP_EVAL_IMAGES_H
-#define TRIMVR_APP_EVAL_IMAGES_H
+#ifndef TRIMVR_EVAL_EVAL_IMAGES_H
+#define TRIMVR_EVAL_EVAL_IMAGES_H
 
 #include "ground_truth.h"
 

@@ -4,8 +4,8 @@
  * Every method fills the byte mask `mask` (one byte per triangle) or writes a
  * sorted id list directly; method.c turns masks into lists, times the call
  * and validates the request, so the per-method files hold only the method. */
-#ifndef TRIMVR_PVS_METHOD_INTERNAL_H
-#define TRIMVR_PVS_METHOD_INTERNAL_H
+#ifndef TRIMVR_EVAL_METHOD_INTERNAL_H
+#define TRIMVR_EVAL_METHOD_INTERNAL_H
 
 #include "method.h"
 

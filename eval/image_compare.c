@@ -1,6 +1,6 @@
 #include "image_compare.h"
 
-#include "config.h"
+#include "mesh_shared.h"
 
 #include <assert.h>
 #include <math.h>

@@ -12,8 +12,8 @@
  * Triangle sets are byte masks indexed by triangle id (1 = in the set): the
  * O(1) membership test the per-pixel metrics need.
  */
-#ifndef TRIMVR_PVS_GROUND_TRUTH_H
-#define TRIMVR_PVS_GROUND_TRUTH_H
+#ifndef TRIMVR_EVAL_GROUND_TRUTH_H
+#define TRIMVR_EVAL_GROUND_TRUTH_H
 
 #include "render.h"
 #include "scene.h"

@@ -2,8 +2,8 @@
  * method, written as DIR/bench.csv, DIR/bench.json and DIR/bench.md (one
  * markdown table per scene, plus the trim-region method's per-phase table),
  * and gnuplot PNGs in the style of the paper's Figures 14-16. */
-#ifndef TRIMVR_APP_BENCH_REPORT_H
-#define TRIMVR_APP_BENCH_REPORT_H
+#ifndef TRIMVR_EVAL_BENCH_REPORT_H
+#define TRIMVR_EVAL_BENCH_REPORT_H
 
 #include "eval_common.h"
 

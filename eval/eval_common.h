@@ -2,10 +2,9 @@
  * they evaluate (along a path, or at floor points of an OpenArena level),
  * one PVS method run plus its ground-truth evaluation per viewcell, means
  * over viewcells, and the JSON keys of one result. */
-#ifndef TRIMVR_APP_EVAL_COMMON_H
-#define TRIMVR_APP_EVAL_COMMON_H
+#ifndef TRIMVR_EVAL_EVAL_COMMON_H
+#define TRIMVR_EVAL_EVAL_COMMON_H
 
-#include "app_scene.h"
 #include "ground_truth.h"
 #include "method.h"
 
@@ -38,9 +37,6 @@ int tv_eval_path_cells(const char* file, int every, int max_cells, float delta, 
  * horizontally towards the level's bounding-box centre. Writes pos[3 * i],
  * dir[3 * i]. Returns the count (0 when the level has no such point), -1 on
  * a bad file. */
-/* <level>.pvs.json next to an OpenArena level's .gltf, from a scene spec. */
-void tv_eval_pvs_json_of(const char* spec, char* buf, size_t size);
-
 int tv_eval_floor_points(const scn_scene* scene, const char* pvs_json, int max_cells, float* pos, float* dir,
                          char* err, size_t err_size);
 
@@ -49,10 +45,12 @@ int tv_eval_floor_points(const scn_scene* scene, const char* pvs_json, int max_c
 pvs_request tv_eval_request(const tv_eval_cell* c, float eye_fov_deg);
 
 /* Computes c's PVS with m, marks it in mask (triangle_count bytes) and
- * evaluates it against ground truth (gt receives the GT mask). Fills c->st,
+ * evaluates it against ground truth in `scene` (uploaded as `gpu` on `rnd`;
+ * gt receives the GT mask). Fills c->st,
  * c->pvs_ms and c->m. False with a one-line reason on failure. */
-bool tv_eval_cell_run(pvs_method* m, const tv_app_scene* s, const pvs_eval_desc* ed, float eye_fov_deg,
-                      tv_eval_cell* c, uint8_t* mask, uint8_t* gt, char* err, size_t err_size);
+bool tv_eval_cell_run(pvs_method* m, rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu,
+                      const pvs_eval_desc* ed, float eye_fov_deg, tv_eval_cell* c, uint8_t* mask, uint8_t* gt,
+                      char* err, size_t err_size);
 
 /* Means over n viewcells: PSNR as the PSNR of the mean squared error,
  * minima and maxima as extremes, k-buffer use as the largest, overflow

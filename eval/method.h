@@ -16,8 +16,8 @@
  *
  * A method object is used by one thread at a time (the PVS worker); several
  * may exist on one rnd_context. */
-#ifndef TRIMVR_PVS_METHOD_H
-#define TRIMVR_PVS_METHOD_H
+#ifndef TRIMVR_EVAL_METHOD_H
+#define TRIMVR_EVAL_METHOD_H
 
 #include "pvs.h"
 #include "render.h"
