@@ -8,7 +8,7 @@
 #include "commands.h"
 #include "eval_common.h"
 #include "eval_images.h"
-#include "fs.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -29,7 +29,7 @@ static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval
     snprintf(name, sizeof name, "%s/eval.json", o->out);
     FILE* f = fopen(name, "w");
     if (!f) {
-        fprintf(stderr, "trimvr eval: error: %s: cannot write\n", name);
+        tv_log(TV_LOG_ERROR, "%s: cannot write", name);
         return false;
     }
     tv_eval_cell mean = tv_eval_mean(cells, n);
@@ -49,7 +49,7 @@ static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval
     }
     fprintf(f, "  ]\n}\n");
     if (fclose(f) != 0) {
-        fprintf(stderr, "trimvr eval: error: %s: write failed\n", name);
+        tv_log(TV_LOG_ERROR, "%s: write failed", name);
         return false;
     }
     return true;
@@ -62,7 +62,7 @@ static int make_cells(const eval_opts* o, tv_eval_cell** out, char* scene_spec, 
     if (!o->path) {
         *out = calloc(1, sizeof **out);
         if (!*out || !tv_viewcell_make(o->pos, o->dir, o->delta, o->fov, o->fov_pvs, &(*out)->vc)) {
-            fprintf(stderr, "trimvr eval: error: --dir must be non-zero and FOVs in (0, 180)\n");
+            tv_log(TV_LOG_ERROR, "--dir must be non-zero and FOVs in (0, 180)");
             return -1;
         }
         return 1;
@@ -71,15 +71,15 @@ static int make_cells(const eval_opts* o, tv_eval_cell** out, char* scene_spec, 
     int n = tv_eval_path_cells(o->path, o->every, o->max_cells, o->delta, o->fov, o->fov_pvs, out, scene_spec,
                                spec_size, err, sizeof err);
     if (n < 0)
-        fprintf(stderr, "trimvr eval: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
     return n;
 }
 
 int tv_cmd_eval(int argc, char** argv)
 {
     eval_opts o = {.out = "out/eval", .method = "tr", .pos = {NAN, NAN, NAN}, .dir = {0, 0, -1}, .delta = 0.1f,
-                   .fov = 60.0f, .fov_pvs = 90.0f, .every = 90, .samples = 200, .res = {640, 360},
-                   .pvs_res = {512, 512}};
+                   .fov = 60.0f, .fov_pvs = 90.0f, .every = 90, .samples = TV_ARGS_DEFAULT_SAMPLES, .res = {640, 360},
+                   .pvs_res = {512, 512}, .k = TV_ARGS_DEFAULT_K};
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &o.scene, "S", "scene (default: the path's '# scene:')"},
         {"pos", TV_ARG_VEC3, o.pos, "X,Y,Z", "one viewcell at this centre (or use --path)"},
@@ -89,12 +89,12 @@ int tv_cmd_eval(int argc, char** argv)
         {"max-cells", TV_ARG_INT, &o.max_cells, "N", "with --path: at most N viewcells (default all)"},
         {"delta", TV_ARG_FLOAT, &o.delta, "M", "viewcell radius (default 0.1)"},
         {"fov", TV_ARG_FLOAT, &o.fov, "DEG", "display FOV, horizontal (default 60)"},
-        {"fov-pvs", TV_ARG_FLOAT, &o.fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
-        {"samples", TV_ARG_INT, &o.samples, "N", "ground-truth views per viewcell (default 200)"},
+        TV_ARG_FOV_PVS(&o.fov_pvs),
+        TV_ARG_SAMPLES(&o.samples),
         {"res", TV_ARG_RES, o.res, "WxH", "sample-view resolution (default 640x360)"},
-        {"pvs-res", TV_ARG_RES, o.pvs_res, "WxH", "tr: PVS resolution (default 512x512)"},
-        {"k", TV_ARG_INT, &o.k, "N", "tr: k-buffer slots per pixel and kind (default 16)"},
-        {"method", TV_ARG_STRING, &o.method, "M", "tr, gt, sas, frompoint or q3vis (default tr)"},
+        TV_ARG_PVS_RES("pvs-res", o.pvs_res),
+        TV_ARG_K(&o.k),
+        TV_ARG_METHOD(&o.method),
         {"out", TV_ARG_STRING, &o.out, "DIR", "output folder (default out/eval)"},
     };
     const char* summary =
@@ -107,10 +107,12 @@ int tv_cmd_eval(int argc, char** argv)
         return r == TV_ARGS_HELP ? 0 : 2;
     pvs_method_desc md = {.tr = {.width = o.pvs_res[0], .height = o.pvs_res[1], .k = (uint32_t)o.k},
                           .width = o.res[0], .height = o.res[1], .gt_samples = (uint32_t)o.samples};
-    if ((!o.path && isnan(o.pos[0])) || o.every < 1 || o.samples < 1 || o.k < 0 || !(o.delta >= 0.0f) ||
+    if (!tv_arg_require("k", o.k, o.k >= 1, ">= 1"))
+        return 2;
+    if ((!o.path && isnan(o.pos[0])) || o.every < 1 || o.samples < 1 || !(o.delta >= 0.0f) ||
         !pvs_method_from_name(o.method, &md.kind)) {
-        fprintf(stderr, "trimvr eval: error: need --pos or --path, a known --method, --every >= 1, "
-                        "--samples >= 1 and --delta >= 0 (see trimvr eval --help)\n");
+        tv_log(TV_LOG_ERROR, "need --pos or --path, a known --method, --every >= 1, "
+               "--samples >= 1 and --delta >= 0 (see trimvr eval --help)");
         return 2;
     }
     char spec[512] = "";
@@ -120,13 +122,13 @@ int tv_cmd_eval(int argc, char** argv)
     int n = make_cells(&o, &cells, spec, sizeof spec);
     if (n < 0)
         return 1;
-    if (!spec[0] || !tv_mkdirs(o.out)) {
-        fprintf(stderr, "trimvr eval: error: %s\n", spec[0] ? "cannot create the output folder" : "no scene: pass --scene");
+    if (!spec[0]) {
+        tv_log(TV_LOG_ERROR, "no scene: pass --scene");
         free(cells);
-        return spec[0] ? 1 : 2;
+        return 2;
     }
     tv_app_scene s;
-    if (!tv_app_scene_open("eval", spec, &s)) {
+    if (!tv_app_scene_open_out(spec, o.out, &s)) {
         free(cells);
         return 1;
     }
@@ -139,15 +141,15 @@ int tv_cmd_eval(int argc, char** argv)
     tv_eval_images worst = {0};
     pvs_eval_desc ed = {.samples = (uint32_t)o.samples, .width = o.res[0], .height = o.res[1]};
     if (!m || !mask || !gt) {
-        fprintf(stderr, "trimvr eval: error: %s\n", m ? "out of memory" : err);
+        tv_log(TV_LOG_ERROR, "%s", m ? "out of memory" : err);
         status = 1;
     }
     for (int i = 0; i < n && status == 0; i++) {
         if (!tv_eval_cell_run(m, &s, &ed, o.fov, &cells[i], mask, gt, err, sizeof err)) {
-            fprintf(stderr, "trimvr eval: error: viewcell %d: %s\n", i, err);
+            tv_log(TV_LOG_ERROR, "viewcell %d: %s", i, err);
             status = 1;
         } else if (!tv_eval_images_keep_worst(&worst, &cells[i].vc, &cells[i].m, mask, gt, tris)) {
-            fprintf(stderr, "trimvr eval: error: out of memory\n");
+            tv_log(TV_LOG_ERROR, "out of memory");
             status = 1;
         }
         fprintf(stderr,
@@ -160,7 +162,7 @@ int tv_cmd_eval(int argc, char** argv)
     if (status == 0 && (!write_json(&o, spec, cells, n) ||
                         !tv_eval_images_write(&worst, s.ctx, s.gpu, &s.scene, &ed, o.out, err, sizeof err))) {
         if (err[0])
-            fprintf(stderr, "trimvr eval: error: %s\n", err);
+            tv_log(TV_LOG_ERROR, "%s", err);
         status = 1;
     }
     if (status == 0)
@@ -170,7 +172,7 @@ int tv_cmd_eval(int argc, char** argv)
     free(gt);
     free(cells);
     pvs_method_destroy(m);
-    if (!tv_app_scene_close("eval", &s))
+    if (!tv_app_scene_close(&s))
         status = 1;
     return status;
 }

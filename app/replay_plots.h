@@ -41,6 +41,11 @@ bool tv_worst_frame_write(const tv_worst_frame* w, const char* dir, char* err, s
 FILE* tv_gnuplot_begin(const char* dir, const char* name, const char* writer);
 void tv_gnuplot_finish(FILE* f, const char* dir, const char* name, const char* kept);
 
+/* Removes what an earlier replay wrote into DIR (frames.csv, summary.json,
+ * plots, worst-frame images), so that a run never leaves its outputs mixed
+ * with an older run's. */
+void tv_replay_remove_outputs(const char* dir);
+
 /* Plots DIR/frames.csv into DIR/plot_*.png with gnuplot. A missing gnuplot is
  * reported as a warning, not a failure: the log and summary are the results. */
 void tv_replay_plots(const char* dir);

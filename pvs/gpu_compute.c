@@ -22,7 +22,18 @@ static bool finite3(const float v[3])
     return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
 }
 
-static bool check_viewcell(const pvs_viewcell* vc, char* err, size_t err_size)
+float pvs_max_apex_offset(float near_m)
+{
+    return sqrtf(PVS_MAX_DEPTH_STEP_M * near_m * 16777216.0f); /* step = 2^-24 z^2 / near */
+}
+
+/* z = Δ / tan α: the apex lies z behind v0 (paper section 3.4). */
+static float apex_offset(const pvs_viewcell* vc)
+{
+    return vc->delta / tanf(glm_rad(vc->fov_pvs_deg) * 0.5f);
+}
+
+static bool check_viewcell(const pvs_context* ctx, const pvs_viewcell* vc, char* err, size_t err_size)
 {
     vec3 f = {vc->forward[0], vc->forward[1], vc->forward[2]}, u = {vc->up[0], vc->up[1], vc->up[2]}, c;
     glm_vec3_cross(f, u, c);
@@ -35,9 +46,19 @@ static bool check_viewcell(const pvs_viewcell* vc, char* err, size_t err_size)
                       : !(vc->fov_pvs_deg > 0.0f && vc->fov_pvs_deg < 180.0f) ? "fov_pvs_deg outside (0, 180)"
                       : !(vc->far_m > 0.0f)                                    ? "far_m <= 0"
                                                                                : NULL;
-    if (why)
+    if (why) {
         snprintf(err, err_size, "pvs_compute: invalid viewcell: %s", why);
-    return why == NULL;
+        return false;
+    }
+    float z_max = pvs_max_apex_offset(ctx->near_m), t = tanf(glm_rad(vc->fov_pvs_deg) * 0.5f);
+    if (apex_offset(vc) > z_max) {
+        snprintf(err, err_size,
+                 "pvs_compute: viewcell delta %g m at PVS FOV %g deg is beyond the %g m the PVS depth buffer "
+                 "resolves (apex %g m behind v0, at most %g m; docs/trim-regions.md)",
+                 vc->delta, vc->fov_pvs_deg, z_max * t, apex_offset(vc), z_max);
+        return false;
+    }
+    return true;
 }
 
 /* Vertical FOV of the PVS frustum: fov_pvs_deg spans the smaller axis, so
@@ -47,12 +68,6 @@ static float fov_y_deg(const pvs_context* ctx, const pvs_viewcell* vc)
 {
     float aspect = (float)ctx->width / (float)ctx->height;
     return aspect >= 1.0f ? vc->fov_pvs_deg : rnd_fov_y_from_x(vc->fov_pvs_deg, aspect);
-}
-
-/* z = Δ / tan α: the apex lies z behind v0 (paper section 3.4). */
-static float apex_offset(const pvs_viewcell* vc)
-{
-    return vc->delta / tanf(glm_rad(vc->fov_pvs_deg) * 0.5f);
 }
 
 /* Far plane from v*: an eye up to 2z ahead of v* sees far_m further. */
@@ -384,7 +399,7 @@ bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char
 {
     assert(ctx && vc && out);
     const double start = tv_now_ms();
-    if (!check_viewcell(vc, err, err_size))
+    if (!check_viewcell(ctx, vc, err, err_size))
         return false;
     *out = (pvs_result){0};
     pvs_stats* st = &out->stats;

@@ -6,6 +6,9 @@
 #   replay_checks.sh csv DIR MIN_ROWS                frames.csv well formed, >= MIN_ROWS rows
 #   replay_checks.sh same DIR1 DIR2                  frames.csv equal except wall-clock columns
 #   replay_checks.sh interrupt DIR SECONDS command...  kill -9 the command mid-run, then check csv
+#   replay_checks.sh sigint DIR SECONDS command...     SIGINT mid-run into a folder holding an older
+#       run's outputs: non-zero exit, "interrupted" on stderr, summary.json marked interrupted with
+#       as many frames as frames.csv has complete rows, and no file of the older run left
 set -u
 mode=$1
 shift
@@ -92,6 +95,39 @@ interrupt)
     wait $pid 2>/dev/null
     [ -f "$dir/summary.json" ] && fail "summary.json exists: the run was not interrupted"
     check_csv "$dir" 4
+    ;;
+sigint)
+    dir=$1
+    secs=$2
+    shift 2
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    echo '{"frames": 999}' >"$dir/summary.json"
+    echo stale >"$dir/plot_psnr.png"
+    err=$(mktemp)
+    "$@" >/dev/null 2>"$err" &
+    pid=$!
+    i=0
+    while [ $i -lt $((secs * 10)) ]; do
+        rows=0
+        [ -f "$dir/frames.csv" ] && rows=$(($(wc -l <"$dir/frames.csv") - 1))
+        [ "$rows" -ge 4 ] && break
+        sleep 0.1
+        i=$((i + 1))
+    done
+    kill -INT $pid 2>/dev/null || fail "the replay finished before it could be interrupted"
+    wait $pid
+    code=$?
+    msg=$(cat "$err")
+    rm -f "$err"
+    [ "$code" -ne 0 ] || fail "exit status 0 after SIGINT"
+    case "$msg" in *interrupted*) ;; *) fail "stderr does not say the run was interrupted: $msg" ;; esac
+    [ -f "$dir/plot_psnr.png" ] && fail "the older run's plot_psnr.png is still there"
+    rows=$(($(wc -l <"$dir/frames.csv") - 1))
+    grep -q '"interrupted": true' "$dir/summary.json" || fail "summary.json is not marked \"interrupted\": true"
+    sh "$0" summary "$dir" "frames == $rows" || exit 1
+    check_csv "$dir" 4
+    echo "ok: exit $code, $rows rows: $msg"
     ;;
 *)
     fail "unknown mode $mode"
