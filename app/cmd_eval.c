@@ -5,6 +5,7 @@
 #include "app_scene.h"
 #include "args.h"
 #include "cli_viewcell.h"
+#include "interrupt.h"
 #include "commands.h"
 #include "eval_common.h"
 #include "eval_images.h"
@@ -23,7 +24,7 @@ typedef struct eval_opts {
     unsigned res[2], pvs_res[2];
 } eval_opts;
 
-static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval_cell* cells, int n)
+static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval_cell* cells, int n, bool interrupted)
 {
     char name[4200];
     snprintf(name, sizeof name, "%s/eval.json", o->out);
@@ -33,7 +34,8 @@ static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval
         return false;
     }
     tv_eval_cell mean = tv_eval_mean(cells, n);
-    fprintf(f, "{\n  \"scene\": \"%s\", \"method\": \"%s\", \"viewcell_count\": %d,\n", scene_name, o->method, n);
+    fprintf(f, "{\n  \"scene\": \"%s\", \"method\": \"%s\", \"viewcell_count\": %d, \"interrupted\": %s,\n",
+            scene_name, o->method, n, interrupted ? "true" : "false");
     fprintf(f, "  \"delta_m\": %.4f, \"fov_deg\": %.2f, \"fov_pvs_deg\": %.2f, \"samples\": %d,\n", o->delta, o->fov,
             o->fov_pvs, cells[0].m.samples);
     fprintf(f, "  \"sample_res\": [%u, %u], \"pvs_res\": [%u, %u],\n", o->res[0], o->res[1], o->pvs_res[0],
@@ -144,7 +146,11 @@ int tv_cmd_eval(int argc, char** argv)
         tv_log(TV_LOG_ERROR, "%s", m ? "out of memory" : err);
         status = 1;
     }
-    for (int i = 0; i < n && status == 0; i++) {
+    /* a signal stops the run between viewcells; eval.json then covers the finished ones */
+    tv_interrupt_install();
+    int done = 0;
+    for (; done < n && status == 0 && !tv_interrupted(); done++) {
+        int i = done;
         if (!tv_eval_cell_run(m, &s, &ed, o.fov, &cells[i], mask, gt, err, sizeof err)) {
             tv_log(TV_LOG_ERROR, "viewcell %d: %s", i, err);
             status = 1;
@@ -159,14 +165,24 @@ int tv_cmd_eval(int argc, char** argv)
                 100.0 * cells[i].m.gt_completeness,
                 cells[i].m.fp_rate, cells[i].m.fn_rate, cells[i].m.fng_pixels_mean, cells[i].m.psnr_min_db);
     }
-    if (status == 0 && (!write_json(&o, spec, cells, n) ||
+    int sig = tv_interrupted();
+    if (status == 0 && done == 0) {
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d before the first viewcell finished", sig);
+        status = tv_interrupt_status(sig);
+    }
+    if (status == 0 && (!write_json(&o, spec, cells, done, sig != 0) ||
                         !tv_eval_images_write(&worst, s.ctx, s.gpu, &s.scene, &ed, o.out, err, sizeof err))) {
         if (err[0])
             tv_log(TV_LOG_ERROR, "%s", err);
         status = 1;
     }
-    if (status == 0)
+    if (status == 0 && sig) {
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d after %d of %d viewcell(s): %s/eval.json covers them", sig,
+               done, n, o.out);
+        status = tv_interrupt_status(sig);
+    } else if (status == 0) {
         printf("trimvr eval: %d viewcell(s) of %s with %s -> %s/eval.json\n", n, spec, o.method, o.out);
+    }
     tv_eval_images_free(&worst);
     free(mask);
     free(gt);

@@ -4,6 +4,7 @@
 #include "args.h"
 #include "commands.h"
 #include "image_io.h"
+#include "interrupt.h"
 #include "path.h"
 #include "stats.h"
 #include "log.h"
@@ -152,8 +153,9 @@ static bool run(render_run* r, int wanted)
     }
     fprintf(r->csv, "frame,t,px,py,pz,qx,qy,qz,qw,eye,draw_cpu_ms,draw_gpu_ms\n");
     double t0 = path->poses[0].t;
-    /* 64-bit frame numbers: wanted * every can exceed an int */
-    for (int64_t f = 0; r->written < wanted; f += o->every, r->written++) {
+    /* 64-bit frame numbers: wanted * every can exceed an int; a signal stops
+     * the run between frames, frames.csv then lists every PNG written */
+    for (int64_t f = 0; r->written < wanted && !tv_interrupted(); f += o->every, r->written++) {
         pred_pose head;
         pred_path_sample(path, t0 + (double)f / o->rate, &head);
         if (!render_frame(r, f, &head))
@@ -181,8 +183,14 @@ int tv_cmd_render(int argc, char** argv)
         pred_path_free(&r.path);
         return wanted == 0 ? 2 : 1;
     }
+    tv_interrupt_install();
     status = run(&r, wanted) ? 0 : 1;
-    if (status == 0)
+    int sig = tv_interrupted();
+    if (status == 0 && sig) {
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d after %d of %d frame(s); %s/frames.csv lists them", sig,
+               r.written, wanted, o.out);
+        status = tv_interrupt_status(sig);
+    } else if (status == 0)
         printf("trimvr render: %s, %u triangles, %d frame(s) at %ux%u on %s into %s; draw ms median %.2f "
                "(p90 %.2f), scene load %.0f ms, upload %.0f ms\n",
                spec, r.s.scene.triangle_count, r.written, o.res[0], o.res[1], rnd_device_name(r.s.ctx),
