@@ -28,6 +28,18 @@ check_csv() {
               printf "ok: %d well-formed rows\n", NR - 1 }' "$f"
 }
 
+# waits (at most SECONDS) until DIR/frames.csv has a few rows, to interrupt a run mid-way
+wait_rows() {
+    i=0
+    while [ $i -lt $(($2 * 10)) ]; do
+        rows=0
+        [ -f "$1/frames.csv" ] && rows=$(($(wc -l <"$1/frames.csv") - 1))
+        [ "$rows" -ge 4 ] && break
+        sleep 0.1
+        i=$((i + 1))
+    done
+}
+
 case $mode in
 summary)
     dir=$1
@@ -82,15 +94,7 @@ interrupt)
     rm -rf "$dir"
     "$@" >/dev/null 2>&1 &
     pid=$!
-    i=0
-    # wait until a few rows exist, then kill hard mid-run
-    while [ $i -lt $((secs * 10)) ]; do
-        rows=0
-        [ -f "$dir/frames.csv" ] && rows=$(($(wc -l <"$dir/frames.csv") - 1))
-        [ "$rows" -ge 4 ] && break
-        sleep 0.1
-        i=$((i + 1))
-    done
+    wait_rows "$dir" "$secs" # then kill hard mid-run
     kill -9 $pid 2>/dev/null || fail "the replay finished before it could be interrupted"
     wait $pid 2>/dev/null
     [ -f "$dir/summary.json" ] && fail "summary.json exists: the run was not interrupted"
@@ -107,14 +111,7 @@ sigint)
     err=$(mktemp)
     "$@" >/dev/null 2>"$err" &
     pid=$!
-    i=0
-    while [ $i -lt $((secs * 10)) ]; do
-        rows=0
-        [ -f "$dir/frames.csv" ] && rows=$(($(wc -l <"$dir/frames.csv") - 1))
-        [ "$rows" -ge 4 ] && break
-        sleep 0.1
-        i=$((i + 1))
-    done
+    wait_rows "$dir" "$secs"
     kill -INT $pid 2>/dev/null || fail "the replay finished before it could be interrupted"
     wait $pid
     code=$?
