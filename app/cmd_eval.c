@@ -86,7 +86,7 @@ static tv_args_result parse(eval_opts* o, int argc, char** argv)
         {"path", TV_ARG_STRING, &o->path, "FILE", "viewcells at the head poses of this path"},
         {"every", TV_ARG_INT, &o->every, "N", "with --path: one viewcell every N display frames at 90 Hz (default 90)"},
         {"max-cells", TV_ARG_INT, &o->max_cells, "N", "with --path: at most N viewcells (default all)"},
-        {"delta", TV_ARG_FLOAT, &o->delta, "M", "viewcell radius (default 0.1)"},
+        {"delta", TV_ARG_FLOAT, &o->delta, "M", "viewcell radius (default 0.1; tr: at most 31.7 m x tan(fov-pvs / 2))"},
         {"fov", TV_ARG_FLOAT, &o->fov, "DEG", "display FOV, horizontal (default 60)"},
         TV_ARG_FOV_PVS(&o->fov_pvs),
         TV_ARG_SAMPLES(&o->samples),

@@ -36,7 +36,7 @@ int tv_cmd_pvs(int argc, char** argv)
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
         {"dir", TV_ARG_VEC3, dir, "X,Y,Z", "view direction (default 0,0,-1)"},
-        {"delta", TV_ARG_FLOAT, &delta, "M", "viewcell radius (default 0.1)"},
+        {"delta", TV_ARG_FLOAT, &delta, "M", "viewcell radius (default 0.1; tr: at most 31.7 m x tan(fov-pvs / 2))"},
         {"fov", TV_ARG_FLOAT, &fov, "DEG", "display FOV (default 60)"},
         TV_ARG_FOV_PVS(&fov_pvs),
         {"res", TV_ARG_RES, res, "WxH", "PVS resolution (default 512x512)"},
