@@ -54,7 +54,7 @@ static bool check_viewcell(const pvs_context* ctx, const pvs_viewcell* vc, char*
     if (apex_offset(vc) > z_max) {
         snprintf(err, err_size,
                  "pvs_compute: viewcell delta %g m at PVS FOV %g deg is beyond the %g m the PVS depth buffer "
-                 "resolves (apex %g m behind v0, at most %g m; docs/trim-regions.md)",
+                 "resolves (apex %g m behind v0, at most %g m; docs/pvs-gpu-passes.md)",
                  vc->delta, vc->fov_pvs_deg, z_max * t, apex_offset(vc), z_max);
         return false;
     }

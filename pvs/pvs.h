@@ -3,7 +3,7 @@
  * pvs_create builds everything that does not depend on the viewcell (welding
  * and triangle adjacency, the octree, GPU buffers and pipelines); pvs_compute
  * then runs, per request, P0 on the CPU (octree layers seen from the apex v*)
- * and P1-P4 on the GPU (docs/trim-regions.md, "GPU passes"), and returns the
+ * and P1-P4 on the GPU (docs/pvs-gpu-passes.md), and returns the
  * sorted unique ids of every triangle potentially visible from the
  * double-cone viewcell.
  *

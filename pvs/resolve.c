@@ -276,9 +276,9 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
  * two moved TV_PVS_TRIM_NUDGE towards the other. The solid lies between the
  * planes, so the region meets a range its fragments overlap or straddle (a
  * thin solid's interval can fall between two draws), and a range that
- * starts on its farther plane: a face in that plane (found on oa:oa_dm5,
- * docs/trim-regions.md) lies behind every draw. With two draws that plane
- * is twice the midpoint less the nearer.
+ * starts on its farther plane: a face in that plane (found on oa:oa_dm5;
+ * docs/trim-regions.md, "Umbra quad and trim quad") lies behind every
+ * draw. With two draws that plane is twice the midpoint less the nearer.
  * When trims were lost, only fragments in front of the nearest lost one
  * count (all of those found room): which ones behind it did depends on
  * arrival order, and the PVS must not. */

@@ -81,7 +81,7 @@
  * whose front triangle v* sees within this cosine of edge-on (beyond 60
  * degrees from its normal): 0.5 kept every FN gain of drawing it always on
  * Sponza and the city, 0.3 lost 0.1 px and 0.1 lost 6 px on Sponza at 20 cm
- * (docs/trim-regions.md). */
+ * (docs/journal/2026-11-23-24-trim-draws-and-cracks.md). */
 #define TV_PVS_GRAZING_COS 0.5
 /* Widest gap (scene units, metres) between two border edges that counts as
  * a crack (scn_mark_cracks): Sponza's decimated columns gape up to ~1.2 cm

@@ -189,7 +189,7 @@ static uint32_t fn_bound(double fraction)
 #define FN_SIMPLE 0.0
 /* builtin:city at these resolutions: sub-pixel slivers (poles seen edge-on,
  * distant ground strips) decide some eye pixels differently from every PVS
- * pixel centre (docs/trim-regions.md, "GPU passes", has the numbers). */
+ * pixel centre (docs/pvs-edge-cases.md, "What the tests check"). */
 #define FN_CITY 0.01
 /* Sub-pixel slivers in a constructed scene (test_small_opening_at_view_edge). */
 #define FN_SLIVER 0.001
