@@ -9,6 +9,8 @@
 #   replay_checks.sh sigint DIR SECONDS command...     SIGINT mid-run into a folder holding an older
 #       run's outputs: non-zero exit, "interrupted" on stderr, summary.json marked interrupted with
 #       as many frames as frames.csv has complete rows, and no file of the older run left
+#   replay_checks.sh sigint-render DIR SECONDS command...  SIGINT mid-run of trimvr render: non-zero
+#       exit, "interrupted" on stderr, frames.csv rows complete
 set -u
 mode=$1
 shift
@@ -38,6 +40,30 @@ wait_rows() {
         sleep 0.1
         i=$((i + 1))
     done
+}
+
+# run_and_signal DIR SECONDS SIG command...: runs the command in the background, sends it SIG once
+# DIR/frames.csv has a few rows and waits; sets code (exit status) and msg (stderr)
+run_and_signal() {
+    dir=$1
+    secs=$2
+    sig=$3
+    err=$(mktemp)
+    shift 3
+    "$@" >/dev/null 2>"$err" &
+    pid=$!
+    wait_rows "$dir" "$secs"
+    kill -"$sig" $pid 2>/dev/null || fail "the run finished before it could be interrupted"
+    wait $pid
+    code=$?
+    msg=$(cat "$err")
+    rm -f "$err"
+}
+
+# the checks after SIGINT: a non-zero exit that stderr explains
+check_sigint() {
+    [ "$code" -ne 0 ] || fail "exit status 0 after SIGINT"
+    case "$msg" in *interrupted*) ;; *) fail "stderr does not say the run was interrupted: $msg" ;; esac
 }
 
 case $mode in
@@ -92,11 +118,7 @@ interrupt)
     secs=$2
     shift 2
     rm -rf "$dir"
-    "$@" >/dev/null 2>&1 &
-    pid=$!
-    wait_rows "$dir" "$secs" # then kill hard mid-run
-    kill -9 $pid 2>/dev/null || fail "the replay finished before it could be interrupted"
-    wait $pid 2>/dev/null
+    run_and_signal "$dir" "$secs" KILL "$@" # hard, mid-run
     [ -f "$dir/summary.json" ] && fail "summary.json exists: the run was not interrupted"
     check_csv "$dir" 4
     ;;
@@ -108,23 +130,24 @@ sigint)
     mkdir -p "$dir"
     echo '{"frames": 999}' >"$dir/summary.json"
     echo stale >"$dir/plot_psnr.png"
-    err=$(mktemp)
-    "$@" >/dev/null 2>"$err" &
-    pid=$!
-    wait_rows "$dir" "$secs"
-    kill -INT $pid 2>/dev/null || fail "the replay finished before it could be interrupted"
-    wait $pid
-    code=$?
-    msg=$(cat "$err")
-    rm -f "$err"
-    [ "$code" -ne 0 ] || fail "exit status 0 after SIGINT"
-    case "$msg" in *interrupted*) ;; *) fail "stderr does not say the run was interrupted: $msg" ;; esac
+    run_and_signal "$dir" "$secs" INT "$@"
+    check_sigint
     [ -f "$dir/plot_psnr.png" ] && fail "the older run's plot_psnr.png is still there"
     rows=$(($(wc -l <"$dir/frames.csv") - 1))
     grep -q '"interrupted": true' "$dir/summary.json" || fail "summary.json is not marked \"interrupted\": true"
     sh "$0" summary "$dir" "frames == $rows" || exit 1
     check_csv "$dir" 4
     echo "ok: exit $code, $rows rows: $msg"
+    ;;
+sigint-render)
+    dir=$1
+    secs=$2
+    shift 2
+    rm -rf "$dir"
+    run_and_signal "$dir" "$secs" INT "$@"
+    check_sigint
+    check_csv "$dir" 4
+    echo "ok: exit $code: $msg"
     ;;
 *)
     fail "unknown mode $mode"
