@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "fs.h"
 #include "stats.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -83,7 +84,7 @@ static int scene_cells(const bench_run* b, const char* spec, const tv_app_scene*
                 (*out)[i].motion[k] = 2.0 * delta * dir[3 * i + k];
         }
         if (n <= 0 || !*out)
-            fprintf(stderr, "trimvr bench: error: %s: %s\n", spec, n < 0 ? err : "no floor point found");
+            tv_log(TV_LOG_ERROR, "%s: %s", spec, n < 0 ? err : "no floor point found");
         return n > 0 && *out ? n : -1;
     }
     char rel[256], buf[4300], scene_spec[8] = "-"; /* non-empty: the path's own scene line is not wanted */
@@ -91,7 +92,7 @@ static int scene_cells(const bench_run* b, const char* spec, const tv_app_scene*
     int n = tv_eval_path_cells(tv_bundled_file(rel, buf, sizeof buf), o->every, o->max_cells, delta, o->fov,
                                o->fov_pvs, out, scene_spec, sizeof scene_spec, err, sizeof err);
     if (n < 0)
-        fprintf(stderr, "trimvr bench: error: %s: %s (no bundled walk: pass --pos)\n", spec, err);
+        tv_log(TV_LOG_ERROR, "%s: %s (no bundled walk: pass --pos)", spec, err);
     return n;
 }
 
@@ -143,7 +144,7 @@ static bool bench_method(bench_run* b, const char* spec, const tv_app_scene* s, 
                           .q3vis_file = kind == PVS_METHOD_Q3VIS ? json : NULL};
     pvs_method* m = pvs_method_create(&md, s->ctx, &s->scene, s->gpu, err, sizeof err);
     if (!m) {
-        fprintf(stderr, "trimvr bench: error: %s: %s\n", spec, err);
+        tv_log(TV_LOG_ERROR, "%s: %s", spec, err);
         return false;
     }
     pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1]};
@@ -167,8 +168,8 @@ static bool bench_method(bench_run* b, const char* spec, const tv_app_scene* s, 
         for (int i = 0; ok && i < n; i++)
             ok = tv_eval_cell_run(m, s->ctx, &s->scene, s->gpu, &ed, o->fov, &cells[i], mask, gt, err, sizeof err);
         if (!ok && n > 0)
-            fprintf(stderr, "trimvr bench: error: %s, %s, delta %.2f: %s\n", spec, pvs_method_name(kind),
-                    b->deltas[d], err);
+            tv_log(TV_LOG_ERROR, "%s, %s, delta %.2f: %s", spec, pvs_method_name(kind),
+                   b->deltas[d], err);
         if (ok && b->nrows == b->cap) {
             b->cap = b->cap ? 2 * b->cap : 64;
             tv_bench_row* grown = realloc(b->rows, (size_t)b->cap * sizeof *grown);
@@ -210,12 +211,12 @@ static bool bench_scene(bench_run* b, const char* spec)
     char file[4200];
     tv_resolve_scene_spec(spec, file, sizeof file);
     if (strncmp(file, "builtin:", 8) != 0 && access(file, R_OK) != 0) {
-        fprintf(stderr, "bench: skip %s: %s not found\n", spec, file);
+        tv_log(TV_LOG_WARN, "skip %s: %s not found", spec, file);
         return true;
     }
     tv_app_scene s;
     b->cells_printed = false;
-    if (!tv_app_scene_open("bench", spec, &s))
+    if (!tv_app_scene_open(spec, &s))
         return false;
     snprintf(b->device, sizeof b->device, "%s", rnd_device_name(s.ctx));
     uint32_t tris = s.scene.triangle_count;
@@ -227,7 +228,7 @@ static bool bench_scene(bench_run* b, const char* spec)
             ok = bench_method(b, spec, &s, b->methods[i], mask, gt);
     free(mask);
     free(gt);
-    return tv_app_scene_close("bench", &s) && ok;
+    return tv_app_scene_close(&s) && ok;
 }
 
 static bool parse_lists(const bench_opts* o, bench_run* b)
@@ -238,15 +239,15 @@ static bool parse_lists(const bench_opts* o, bench_run* b)
         char* end;
         b->deltas[i] = strtof(items[i], &end);
         if (*end || !(b->deltas[i] >= 0.0f) || (i > 0 && b->deltas[i] <= b->deltas[i - 1])) {
-            fprintf(stderr, "trimvr bench: error: --deltas: expected ascending metres >= 0, got '%s'\n", items[i]);
+            tv_log(TV_LOG_ERROR, "--deltas: expected ascending metres >= 0, got '%s'", items[i]);
             return false;
         }
     }
     int n = split(o->methods, buf, sizeof buf, items, ',');
     for (int i = 0; i < n; i++) {
         if (b->nmethod == PVS_METHOD_COUNT || !pvs_method_from_name(items[i], &b->methods[b->nmethod++])) {
-            fprintf(stderr, "trimvr bench: error: --methods: unknown or repeated method '%s' (tr, gt, sas, "
-                            "frompoint, q3vis)\n", items[i]);
+            tv_log(TV_LOG_ERROR, "--methods: unknown or repeated method '%s' (tr, gt, sas, "
+                   "frompoint, q3vis)", items[i]);
             return false;
         }
     }
@@ -254,7 +255,7 @@ static bool parse_lists(const bench_opts* o, bench_run* b)
     for (int i = 0; i < b->npos; i++) {
         char tail;
         if (sscanf(items[i], "%f,%f,%f%c", &b->pos[3 * i], &b->pos[3 * i + 1], &b->pos[3 * i + 2], &tail) != 3) {
-            fprintf(stderr, "trimvr bench: error: --pos: expected X,Y,Z;X,Y,Z..., got '%s'\n", items[i]);
+            tv_log(TV_LOG_ERROR, "--pos: expected X,Y,Z;X,Y,Z..., got '%s'", items[i]);
             return false;
         }
     }
@@ -265,7 +266,7 @@ int tv_cmd_bench(int argc, char** argv)
 {
     bench_opts o = {.scenes = DEFAULT_SCENES, .deltas = "0.05,0.1,0.2,0.3", .methods = "tr,sas,frompoint,gt,q3vis",
                     .out = "out/bench", .dir = {0, 0, -1}, .fov = 60.0f, .fov_pvs = 90.0f, .every = 450,
-                    .max_cells = 3, .samples = 50, .res = {320, 180}};
+                    .max_cells = 3, .samples = 50, .res = {320, 180}, .k = TV_ARGS_DEFAULT_K};
     const tv_arg args[] = {
         {"scenes", TV_ARG_STRING, &o.scenes, "S,S..", "scenes (default builtin:city, sponza and the six oa: levels)"},
         {"deltas", TV_ARG_STRING, &o.deltas, "M,M..", "viewcell radii, ascending (default 0.05,0.1,0.2,0.3)"},
@@ -277,9 +278,9 @@ int tv_cmd_bench(int argc, char** argv)
         {"samples", TV_ARG_INT, &o.samples, "N", "ground-truth views per viewcell, also gt's (default 50)"},
         {"res", TV_ARG_RES, o.res, "WxH", "ground-truth and id-buffer resolution (default 320x180)"},
         {"pvs-res", TV_ARG_RES, o.pvs_res, "WxH", "tr resolution and full-render timing (default 512x512)"},
-        {"k", TV_ARG_INT, &o.k, "N", "tr: k-buffer slots per pixel and kind (default 16)"},
+        TV_ARG_K(&o.k),
         {"fov", TV_ARG_FLOAT, &o.fov, "DEG", "display FOV, horizontal (default 60)"},
-        {"fov-pvs", TV_ARG_FLOAT, &o.fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
+        TV_ARG_FOV_PVS(&o.fov_pvs),
         {"out", TV_ARG_STRING, &o.out, "DIR", "output folder (default out/bench)"},
     };
     const char* summary =
@@ -297,14 +298,16 @@ int tv_cmd_bench(int argc, char** argv)
     if (!parse_lists(&o, &b))
         return 2;
     float dir_len = sqrtf(o.dir[0] * o.dir[0] + o.dir[1] * o.dir[1] + o.dir[2] * o.dir[2]);
-    if (o.every < 1 || o.samples < 1 || o.k < 0 || o.max_cells < 1 || !(o.fov > 0.0f && o.fov <= o.fov_pvs) ||
+    if (!tv_arg_require("k", o.k, o.k >= 1, ">= 1"))
+        return 2;
+    if (o.every < 1 || o.samples < 1 || o.max_cells < 1 || !(o.fov > 0.0f && o.fov <= o.fov_pvs) ||
         !(o.fov_pvs < 179.0f) || !(dir_len > 0.0f)) {
-        fprintf(stderr, "trimvr bench: error: need --path-every, --samples, --max-cells >= 1, --k >= 0 and "
-                        "0 < --fov <= --fov-pvs < 179 and a non-zero --dir (see trimvr bench --help)\n");
+        tv_log(TV_LOG_ERROR, "need --path-every, --samples, --max-cells >= 1 and "
+               "0 < --fov <= --fov-pvs < 179 and a non-zero --dir (see trimvr bench --help)");
         return 2;
     }
     if (!tv_mkdirs(o.out)) {
-        fprintf(stderr, "trimvr bench: error: %s: cannot create the output folder\n", o.out);
+        tv_log(TV_LOG_ERROR, "%s: cannot create the output folder", o.out);
         return 1;
     }
     char buf[1024], *scenes[MAX_LIST];
@@ -323,11 +326,11 @@ int tv_cmd_bench(int argc, char** argv)
                           .wall_s = (tv_now_ms() - b.t0) / 1000.0};
     char err[4300];
     if (ok && b.nrows == 0) {
-        fprintf(stderr, "trimvr bench: error: no scene could be benchmarked\n");
+        tv_log(TV_LOG_ERROR, "no scene could be benchmarked");
         ok = false;
     }
     if (ok && !tv_bench_write(o.out, &info, b.rows, b.nrows, err, sizeof err)) {
-        fprintf(stderr, "trimvr bench: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         ok = false;
     }
     if (ok) {

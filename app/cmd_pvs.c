@@ -6,6 +6,7 @@
 #include "cli_viewcell.h"
 #include "commands.h"
 #include "method.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -30,19 +31,19 @@ int tv_cmd_pvs(int argc, char** argv)
     const char *scene = NULL, *method = "tr", *ids_out = NULL;
     float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
-    int k = 0, coop_min = 0;
+    int k = TV_ARGS_DEFAULT_K, coop_min = 0;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
         {"dir", TV_ARG_VEC3, dir, "X,Y,Z", "view direction (default 0,0,-1)"},
-        {"delta", TV_ARG_FLOAT, &delta, "M", "viewcell radius (default 0.1)"},
+        {"delta", TV_ARG_FLOAT, &delta, "M", "viewcell radius (default 0.1; tr: at most 31.7 m x tan(fov-pvs / 2))"},
         {"fov", TV_ARG_FLOAT, &fov, "DEG", "display FOV (default 60)"},
-        {"fov-pvs", TV_ARG_FLOAT, &fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
+        TV_ARG_FOV_PVS(&fov_pvs),
         {"res", TV_ARG_RES, res, "WxH", "PVS resolution (default 512x512)"},
-        {"k", TV_ARG_INT, &k, "N", "tr: k-buffer slots per pixel and kind (default 16)"},
+        TV_ARG_K(&k),
         {"coop-min", TV_ARG_INT, &coop_min, "N",
          "tr: sort trim sequences of >= N entries with a workgroup per pixel (default 8; 1000: never)"},
-        {"method", TV_ARG_STRING, &method, "M", "tr, gt, sas, frompoint or q3vis (default tr)"},
+        TV_ARG_METHOD(&method),
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
     };
     tv_args_result r = tv_args_parse("pvs", "Computes the PVS of one viewcell and prints a summary.", args,
@@ -54,14 +55,15 @@ int tv_cmd_pvs(int argc, char** argv)
                                  .coop_sort_min = (uint32_t)coop_min},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
-    if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc) ||
-        k < 0 || coop_min < 0) {
-        fprintf(stderr, "trimvr pvs: error: need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0, "
-                        "FOVs in (0, 180) and --k, --coop-min >= 0 (see trimvr pvs --help)\n");
+    if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0"))
+        return 2;
+    if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc)) {
+        tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "
+               "FOVs in (0, 180) (see trimvr pvs --help)");
         return 2;
     }
     tv_app_scene s;
-    if (!tv_app_scene_open("pvs", scene, &s))
+    if (!tv_app_scene_open(scene, &s))
         return 1;
     char err[512];
     int status = 0;
@@ -74,7 +76,7 @@ int tv_cmd_pvs(int argc, char** argv)
     uint32_t count = 0;
     pvs_method_stats st = {0};
     if (!m || !pvs_method_compute(m, &req, &ids, &count, &st, err, sizeof err)) {
-        fprintf(stderr, "trimvr pvs: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         status = 1;
     } else {
         printf("scene             %s (%u triangles) on %s\n", scene, s.scene.triangle_count, rnd_device_name(s.ctx));
@@ -91,14 +93,14 @@ int tv_cmd_pvs(int argc, char** argv)
             for (uint32_t i = 0; f && i < count; i++)
                 fprintf(f, "%u\n", ids[i]);
             if (!f || fclose(f) != 0) {
-                fprintf(stderr, "trimvr pvs: error: %s: cannot write\n", ids_out);
+                tv_log(TV_LOG_ERROR, "%s: cannot write", ids_out);
                 status = 1;
             }
         }
     }
     free(ids);
     pvs_method_destroy(m);
-    if (!tv_app_scene_close("pvs", &s))
+    if (!tv_app_scene_close(&s))
         status = 1;
     return status;
 }

@@ -10,6 +10,7 @@
 #include "image_io.h"
 #include "path.h"
 #include "swapchain.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -261,7 +262,7 @@ static bool write_shot(demo* m, const char* file)
     char err[512];
     rnd_swapchain_extent(m->sc, &w, &h);
     if (!scn_image_write_png(file, m->shot, w, h, 4, err, sizeof err)) {
-        fprintf(stderr, "trimvr demo: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return false;
     }
     printf("trimvr demo: screenshot %s (%ux%u)\n", file, w, h);
@@ -311,8 +312,8 @@ static bool present(demo* m, const char* shot_file)
         }
         return !shot_file || write_shot(m, shot_file);
     }
-    fprintf(stderr, "trimvr demo: error: presenting frame %llu: %s\n", (unsigned long long)m->frame,
-            err[0] ? err : "the window kept changing size");
+    tv_log(TV_LOG_ERROR, "presenting frame %llu: %s", (unsigned long long)m->frame,
+           err[0] ? err : "the window kept changing size");
     return false;
 }
 
@@ -336,7 +337,7 @@ static bool frame(demo* m, double t)
     double frame_s = fixed_clock(m) ? 1.0 / d->rate_hz : m->frame_ms * 1e-3;
     feed_head(m, &head);
     if (tv_pvs_pipeline_step(&m->pvs, head.t, frame_s, !m->frozen, err, sizeof err) < 0) {
-        fprintf(stderr, "trimvr demo: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return false;
     }
     if (!fixed_clock(m)) { /* late latch: the newest input and clock right before rendering */
@@ -346,8 +347,8 @@ static bool frame(demo* m, double t)
         head_at(m, t_latch, &head);
     }
     if (!render_eyes(m, &head)) {
-        fprintf(stderr, "trimvr demo: error: rendering frame %llu failed (Vulkan error logged)\n",
-                (unsigned long long)m->frame);
+        tv_log(TV_LOG_ERROR, "rendering frame %llu failed (Vulkan error logged)",
+               (unsigned long long)m->frame);
         return false;
     }
     draw_overlays(m, t);
@@ -468,34 +469,34 @@ int tv_demo_run(const tv_demo_desc* d)
     m.overview = d->overview;
     m.fov_v_deg = rnd_fov_y_from_x(d->fov_h_deg, (float)d->width / (float)d->height);
     if (d->path && !pred_path_load(d->path, &m.path, err, sizeof err)) {
-        fprintf(stderr, "trimvr demo: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return 1;
     }
     const char* spec = d->scene ? d->scene : m.path.scene[0] ? m.path.scene : "builtin:interior";
     if (!d->path && !d->have_start && d->start_yaw_deg == 0.0f)
         bundled_walk(spec, &m.path);
     if (!tv_window_system_init(err, sizeof err)) {
-        fprintf(stderr, "trimvr demo: error: %s; the demo needs a display: run 'trimvr replay' for the headless "
-                        "loop, or run it under Xvfb: xvfb-run -a build/trimvr demo ...\n", err);
+        tv_log(TV_LOG_ERROR, "%s; the demo needs a display: run 'trimvr replay' for the headless "
+               "loop, or run it under Xvfb: xvfb-run -a build/trimvr demo ...", err);
         pred_path_free(&m.path);
         return 1;
     }
     uint32_t ext_count = 0;
     const char* const* exts = tv_window_instance_extensions(&ext_count);
     rnd_desc rd = {.instance_extensions = exts, .instance_extension_count = ext_count, .swapchain = true};
-    bool ok = exts && tv_app_scene_open_desc("demo", spec, &rd, &m.s);
+    bool ok = exts && tv_app_scene_open_desc(spec, &rd, &m.s);
     if (!exts)
-        fprintf(stderr, "trimvr demo: error: GLFW lists no Vulkan surface extensions for this display\n");
+        tv_log(TV_LOG_ERROR, "GLFW lists no Vulkan surface extensions for this display");
     if (ok && !(setup(&m, err, sizeof err) && run(&m))) {
         if (err[0])
-            fprintf(stderr, "trimvr demo: error: %s\n", err);
+            tv_log(TV_LOG_ERROR, "%s", err);
         ok = false;
     }
     if (ok)
         summary(&m, (tv_now_ms() - m.wall0) * 1e-3);
     if (m.s.ctx) {
         teardown(&m);
-        ok = tv_app_scene_close("demo", &m.s) && ok;
+        ok = tv_app_scene_close(&m.s) && ok;
     }
     tv_window_system_shutdown();
     pred_path_free(&m.path);

@@ -4,10 +4,11 @@
 #include "app_scene.h"
 #include "clock.h"
 #include "pvs_pipeline.h"
-#include "fs.h"
 #include "image_compare.h"
+#include "interrupt.h"
 #include "replay_log.h"
 #include "replay_plots.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -127,7 +128,8 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
     double cpu_s = d->cpu_ms * 1e-3;
     double frame_s = 1.0 / st->sim.desc.display_rate_hz;
     double wall0 = tv_now_ms();
-    for (uint64_t k = 0; k < frames; k++) {
+    /* a signal stops the run between frames: every row written is complete */
+    for (uint64_t k = 0; k < frames && !tv_interrupted(); k++) {
         double t_frame = hmd_display_time(&st->sim, k);
         double t_submit = t_frame + cpu_s;
         /* late latching: the pose is the newest sample at submit time;
@@ -216,31 +218,26 @@ int tv_replay_run(const tv_replay_desc* d)
     memset(&st, 0, sizeof st);
     st.d = d;
     double wall0 = tv_now_ms();
-    if (!tv_mkdirs(d->out_dir)) {
-        fprintf(stderr, "trimvr replay: error: %s: cannot create the output folder\n", d->out_dir);
-        return 1;
-    }
-    if (!pred_path_load(d->path, &st.path, err, sizeof err)) {
-        fprintf(stderr, "trimvr replay: error: %s\n", err);
-        return 1;
-    }
-    const char* spec = d->scene ? d->scene : st.path.scene;
-    if (!spec[0]) {
-        fprintf(stderr, "trimvr replay: error: %s has no '# scene:' line; pass --scene\n", d->path);
-        pred_path_free(&st.path);
-        return 2;
-    }
-    if (!tv_app_scene_open("replay", spec, &st.s)) {
+    const char* spec;
+    int status = tv_app_load_path(d->path, d->scene, &st.path, &spec);
+    if (status != 0)
+        return status;
+    if (!tv_app_scene_open_out(spec, d->out_dir, &st.s)) {
         pred_path_free(&st.path);
         return 1;
     }
+    tv_replay_remove_outputs(d->out_dir);
+    tv_interrupt_install();
     bool ok = setup(&st, err, sizeof err) && first_pvs(&st, err, sizeof err);
     uint64_t frames = hmd_display_frame_count(&st.sim);
     if (d->max_frames && d->max_frames < frames)
         frames = d->max_frames;
     ok = ok && run_loop(&st, frames, err, sizeof err);
     if (!ok)
-        fprintf(stderr, "trimvr replay: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
+    int sig = tv_interrupted();
+    if (sig && d->progress)
+        fputc('\n', stderr); /* end the progress bar's line */
     if (st.log) {
         tv_replay_meta meta = {
             .scene = spec,
@@ -255,22 +252,26 @@ int tv_replay_run(const tv_replay_desc* d)
             .eye_fov_deg = d->viewcell.display_fov_h_deg,
             .display_frames = frames,
             .wall_s = (tv_now_ms() - wall0) * 1e-3,
+            .interrupted = sig != 0,
         };
         char ferr[512] = "";
         if (!tv_replay_log_finish(st.log, d->out_dir, &meta, ok ? stdout : NULL, ferr, sizeof ferr)) {
-            fprintf(stderr, "trimvr replay: error: %s\n", ferr);
+            tv_log(TV_LOG_ERROR, "%s", ferr);
             ok = false;
         }
         if (ok && !tv_worst_frame_write(&st.worst, d->out_dir, ferr, sizeof ferr)) {
-            fprintf(stderr, "trimvr replay: error: %s\n", ferr);
+            tv_log(TV_LOG_ERROR, "%s", ferr);
             ok = false;
         }
-        if (ok && d->plots)
+        if (ok && d->plots && !sig)
             tv_replay_plots(d->out_dir);
     }
+    if (ok && sig)
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d: %s/summary.json (\"interrupted\": true) and frames.csv hold "
+               "the frames evaluated so far", sig, d->out_dir);
     teardown(&st);
-    if (!tv_app_scene_close("replay", &st.s))
+    if (!tv_app_scene_close(&st.s))
         ok = false;
     pred_path_free(&st.path);
-    return ok ? 0 : 1;
+    return !ok ? 1 : sig ? tv_interrupt_status(sig) : 0;
 }

@@ -1,5 +1,6 @@
 #include "replay_log.h"
 
+#include "json.h"
 #include "stats.h"
 
 #include <math.h>
@@ -108,15 +109,6 @@ double tv_replay_log_worst_psnr(const tv_replay_log* log)
     return tv_percentile(log->psnr.v, log->psnr.n, 0.0);
 }
 
-/* JSON has no infinity: identical images are written as null and counted separately */
-static void json_number(FILE* f, const char* key, double v, bool last)
-{
-    if (isfinite(v))
-        fprintf(f, "  \"%s\": %.6g%s\n", key, v, last ? "" : ",");
-    else
-        fprintf(f, "  \"%s\": null%s\n", key, last ? "" : ",");
-}
-
 static void free_series(tv_replay_log* log)
 {
     series* all[] = {&log->psnr,        &log->fn,         &log->pvs_fraction, &log->delta,
@@ -165,26 +157,29 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(f, "  \"scene_tris\": %u,\n  \"width\": %u,\n  \"height\": %u,\n", m->scene_tris, m->width, m->height);
         fprintf(f, "  \"eye_fov_deg\": %.3f,\n", m->eye_fov_deg);
         fprintf(f, "  \"display_frames\": %llu,\n", (unsigned long long)m->display_frames);
+        fprintf(f, "  \"interrupted\": %s,\n", m->interrupted ? "true" : "false");
         fprintf(f, "  \"frames\": %llu,\n", (unsigned long long)log->rows);
         fprintf(f, "  \"identical_frames\": %llu,\n", (unsigned long long)log->identical);
-        json_number(f, "psnr_mean_db", sm.psnr_mean, false);
-        json_number(f, "psnr_min_db", sm.psnr_min, false);
-        json_number(f, "psnr_p5_db", sm.psnr_p5, false);
-        json_number(f, "fn_pixels_mean", sm.fn_mean, false);
-        json_number(f, "fn_pixels_max", sm.fn_max, false);
         fprintf(f, "  \"viewcell_miss_frames\": %llu,\n", (unsigned long long)log->misses);
-        json_number(f, "pvs_fraction_mean", sm.pvs_fraction, false);
-        json_number(f, "delta_mean_m", sm.delta, false);
-        json_number(f, "fov_pvs_mean_deg", sm.fov, false);
         fprintf(f, "  \"pvs_count\": %zu,\n", log->pvs_ms.n);
-        json_number(f, "pvs_ms_mean", sm.pvs_ms, false);
-        json_number(f, "pvs_ms_median", sm.pvs_ms_median, false);
-        json_number(f, "render_full_ms_mean", sm.full_ms, false);
-        json_number(f, "render_pvs_ms_mean", sm.pvs_render_ms, false);
-        json_number(f, "pred_err_pos_p99_m", sm.pred_pos_p99, false);
-        json_number(f, "pred_err_rot_p99_deg", sm.pred_rot_p99, false);
-        json_number(f, "pose_age_ms_mean", sm.pose_age, false);
-        json_number(f, "wall_s", m->wall_s, true);
+        const struct {
+            const char* key;
+            double v;
+        } nums[] = {
+            {"psnr_mean_db", sm.psnr_mean},          {"psnr_min_db", sm.psnr_min},
+            {"psnr_p5_db", sm.psnr_p5},              {"fn_pixels_mean", sm.fn_mean},
+            {"fn_pixels_max", sm.fn_max},            {"pvs_fraction_mean", sm.pvs_fraction},
+            {"delta_mean_m", sm.delta},              {"fov_pvs_mean_deg", sm.fov},
+            {"pvs_ms_mean", sm.pvs_ms},              {"pvs_ms_median", sm.pvs_ms_median},
+            {"render_full_ms_mean", sm.full_ms},     {"render_pvs_ms_mean", sm.pvs_render_ms},
+            {"pred_err_pos_p99_m", sm.pred_pos_p99}, {"pred_err_rot_p99_deg", sm.pred_rot_p99},
+            {"pose_age_ms_mean", sm.pose_age},       {"wall_s", m->wall_s},
+        };
+        size_t count = sizeof nums / sizeof nums[0];
+        for (size_t i = 0; i < count; i++) {
+            fputs("  ", f);
+            tv_json_num(f, nums[i].key, nums[i].v, i + 1 < count ? ",\n" : "\n");
+        }
         fprintf(f, "}\n");
         ok = fclose(f) == 0;
     }

@@ -61,6 +61,7 @@ typedef struct tv_replay_meta {
     double eye_fov_deg;
     uint64_t display_frames;
     double wall_s;
+    bool interrupted; /* stopped by a signal: frames < the frames asked for */
 } tv_replay_meta;
 
 /* Writes DIR/summary.json and prints the one-screen table to `table`

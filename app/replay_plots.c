@@ -47,6 +47,22 @@ void tv_worst_frame_offer(tv_worst_frame* w, double psnr_db, uint64_t frame, int
         w->fn[i] = full_ids[i] < triangle_count && !tri_in_set[full_ids[i]];
 }
 
+/* Every file a replay writes: the log, the worst frame's images (in this
+ * order, which tv_worst_frame_write relies on), the plot script and plots. */
+static const char* const k_outputs[] = {
+    "frames.csv",    "summary.json",   "worst_full.png",   "worst_pvs.png",      "worst_diff.png",
+    "plots.gp",      "plot_psnr.png",  "plot_fn_pixels.png", "plot_pvs_size.png", "plot_delta.png",
+    "plot_prediction_error.png", "plot_timings.png"};
+
+void tv_replay_remove_outputs(const char* dir)
+{
+    char name[4200];
+    for (size_t i = 0; i < sizeof k_outputs / sizeof k_outputs[0]; i++) {
+        snprintf(name, sizeof name, "%s/%s", dir, k_outputs[i]);
+        remove(name); /* absent is the usual case */
+    }
+}
+
 bool tv_worst_frame_write(const tv_worst_frame* w, const char* dir, char* err, size_t err_size)
 {
     if (!w->have)
@@ -78,7 +94,7 @@ bool tv_worst_frame_write(const tv_worst_frame* w, const char* dir, char* err, s
     }
     char name[4200];
     bool ok = true;
-    const char* files[3] = {"worst_full.png", "worst_pvs.png", "worst_diff.png"};
+    const char* const* files = k_outputs + 2;
     const uint8_t* images[3] = {w->full, w->pvs, diff};
     const uint32_t channels[3] = {4, 4, 3};
     for (int k = 0; k < 3 && ok; k++) {

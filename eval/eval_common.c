@@ -233,14 +233,6 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
     return r;
 }
 
-void tv_json_num(FILE* f, const char* key, double v, const char* tail)
-{
-    if (isfinite(v))
-        fprintf(f, "\"%s\": %.6g%s", key, v, tail);
-    else
-        fprintf(f, "\"%s\": null%s", key, tail);
-}
-
 void tv_eval_json_metrics(FILE* f, const tv_eval_cell* c, const char* indent)
 {
     const pvs_eval_result* m = &c->m;

@@ -6,6 +6,7 @@
 #define TRIMVR_EVAL_EVAL_COMMON_H
 
 #include "ground_truth.h"
+#include "json.h"
 #include "method.h"
 
 #include <stdbool.h>
@@ -56,10 +57,6 @@ bool tv_eval_cell_run(pvs_method* m, rnd_context* rnd, const scn_scene* scene, c
  * minima and maxima as extremes, k-buffer use as the largest, overflow
  * pixels summed, so one bad viewcell is never averaged away. */
 tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n);
-
-/* "key": value with a tail; a non-finite value (an infinite PSNR:
- * identical images) is written as null. */
-void tv_json_num(FILE* f, const char* key, double v, const char* tail);
 
 /* The metric keys of one result (see docs/evaluation.md), no trailing comma. */
 void tv_eval_json_metrics(FILE* f, const tv_eval_cell* c, const char* indent);

@@ -5,6 +5,7 @@
 #include "stats.h"
 
 #include <assert.h>
+#include <cglm/cglm.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,20 +42,6 @@ static double jitter(uint32_t seed, uint32_t sample, uint32_t dim)
     return (double)(z >> 11) * (1.0 / 9007199254740992.0);
 }
 
-static void normalize3(double v[3])
-{
-    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (int i = 0; i < 3; i++)
-        v[i] /= n;
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 typedef struct cell_frame {
     double v0[3], f[3], u[3], r[3];
     double base_q[4];
@@ -63,15 +50,16 @@ typedef struct cell_frame {
 static cell_frame make_frame(const pred_viewcell* vc)
 {
     cell_frame c;
+    vec3 f = {vc->forward[0], vc->forward[1], vc->forward[2]}, u = {vc->up[0], vc->up[1], vc->up[2]}, r;
+    glm_vec3_normalize(f);
+    glm_vec3_crossn(f, u, r);
+    glm_vec3_cross(r, f, u);
     for (int i = 0; i < 3; i++) {
         c.v0[i] = vc->v0[i];
-        c.f[i] = vc->forward[i];
-        c.u[i] = vc->up[i];
+        c.f[i] = f[i];
+        c.u[i] = u[i];
+        c.r[i] = r[i];
     }
-    normalize3(c.f);
-    cross3(c.f, c.u, c.r);
-    normalize3(c.r);
-    cross3(c.r, c.f, c.u);
     pred_quat_look(c.f, c.u, c.base_q);
     return c;
 }

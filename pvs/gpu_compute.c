@@ -17,6 +17,11 @@
  * corners lie exactly on the latter and must not be clipped. */
 #define PVS_RASTER_FAR_SCALE 1.01f
 
+float pvs_max_apex_offset(float near_m)
+{
+    return sqrtf(PVS_MAX_DEPTH_STEP_M * near_m * 16777216.0f); /* step = 2^-24 z^2 / near */
+}
+
 /* Vertical FOV of the PVS frustum: fov_pvs_deg spans the smaller axis, so
  * the frustum contains the square one of half-angle α that predict/ sizes
  * the viewcell for (docs/prediction.md) at any resolution. */
@@ -30,6 +35,19 @@ static float fov_y_deg(const pvs_context* ctx, const pvs_viewcell* vc)
 static float apex_offset(const pvs_viewcell* vc)
 {
     return vc->delta / tanf(glm_rad(vc->fov_pvs_deg) * 0.5f);
+}
+
+/* The apex offset the depth buffer resolves (pvs.h, PVS_MAX_DEPTH_STEP_M). */
+static bool check_apex_offset(const pvs_context* ctx, const pvs_viewcell* vc, char* err, size_t err_size)
+{
+    float z_max = pvs_max_apex_offset(ctx->near_m);
+    if (apex_offset(vc) <= z_max)
+        return true;
+    snprintf(err, err_size,
+             "pvs_compute: viewcell delta %g m at PVS FOV %g deg is beyond the %g m the PVS depth buffer "
+             "resolves (apex %g m behind v0, at most %g m; docs/pvs-gpu-passes.md)",
+             vc->delta, vc->fov_pvs_deg, z_max * tanf(glm_rad(vc->fov_pvs_deg) * 0.5f), apex_offset(vc), z_max);
+    return false;
 }
 
 /* Far plane from v*: an eye up to 2z ahead of v* sees far_m further. */
@@ -366,6 +384,8 @@ bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char
         snprintf(err, err_size, "pvs_compute: invalid viewcell: %s", invalid);
         return false;
     }
+    if (!check_apex_offset(ctx, vc, err, err_size))
+        return false;
     *out = (pvs_result){0};
     pvs_stats* st = &out->stats;
     rnd_camera cam = pvs_apex_camera(ctx, vc);

@@ -41,6 +41,18 @@ typedef struct pvs_desc {
                                         UINT32_MAX: never */
 } pvs_desc;
 
+/* The apex may lie at most pvs_max_apex_offset(near_m) behind v0, that is
+ * Δ <= that x tan α. The PVS depth buffer (D32_SFLOAT, standard Z, near
+ * plane near_m) resolves depth steps of about 2^-24 d^2 / near_m at distance
+ * d from the apex; around the viewcell (d ~ z) the steps must stay within
+ * PVS_MAX_DEPTH_STEP_M or the depth tests of the passes merge distinct
+ * surfaces and the PVS loses visible triangles (builtin:unit, PVS 512x512,
+ * near 0.01 m: conservative at z = 30 m, a 5.4 mm step; misses at z = 40 m,
+ * 9.5 mm; nothing at all at z = 1e5 m, where every depth rounds to the far
+ * plane's). With the default near plane the limit is z <= 31.7 m. */
+#define PVS_MAX_DEPTH_STEP_M 0.006f
+float pvs_max_apex_offset(float near_m);
+
 typedef struct pvs_stats {
     double ms[5];                 /* P0..P4: P0, P4 CPU wall clock; P1-P3 GPU timestamps summed
                                      over layers (wall clock of the whole submission when the
@@ -80,7 +92,8 @@ void pvs_destroy(pvs_context* ctx);
 /* Computes the PVS of `vc` into `out` (see pvs_result for ownership). Blocks
  * until the GPU is done. Returns false with a one-line reason in err on an
  * invalid viewcell (non-finite values, zero forward, up parallel to forward,
- * fov outside (0, 180), far_m <= 0) or a Vulkan failure. */
+ * fov outside (0, 180), far_m <= 0, an apex offset z = Δ / tan α beyond
+ * pvs_max_apex_offset) or a Vulkan failure. */
 bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char* err, size_t err_size);
 
 /* The frustum pvs_compute uses, as an rnd_camera at the apex v* (aspect of
