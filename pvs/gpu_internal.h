@@ -7,6 +7,7 @@
 #include "layers.h"
 #include "octree.h"
 #include "pvs.h"
+#include "tiles.h"
 #include "vk_internal.h"
 
 #include "config.h"
@@ -19,6 +20,7 @@ typedef struct pvs_view_gpu {
     float tan_half_x, tan_half_y, tan_alpha, far_dist; /* far_dist: PVS far plane from v* */
     float near_dist, delta, focal_px, max_width;      /* max_width: clamp of infinite trim widths */
     uint32_t width, height, k, triangle_count;
+    uint32_t tile_x, tile_y, tile_w, tile_h; /* rewritten per tile by the command buffer */
 } pvs_view_gpu;
 
 /* Push constants of every PVS pipeline (mirrors pvs_common.glsl). */
@@ -38,6 +40,7 @@ struct pvs_context {
     rnd_context* rnd;
     const rnd_gpu_scene* gpu;
     uint32_t width, height, k;
+    pvs_tile_grid grid;     /* the per-pixel buffers hold one tile */
     uint32_t coop_sort_min; /* specialisation constants of P3's per-thread pass ... */
     uint32_t coop_width;    /* ... and of its cooperative pass: workgroup size = subgroup size */
     float near_m;
@@ -62,7 +65,8 @@ struct pvs_context {
     VkDescriptorSet set;
     VkPipeline pipelines[PVS_PIPE_COUNT];
 
-    uint32_t* result; /* sorted ids of the last computation */
+    uint32_t* result;           /* sorted ids of the last computation */
+    pvs_layer_stats* per_layer; /* its per-layer statistics, layer_capacity entries */
 };
 
 #define PVS_NEVER_COOP UINT32_MAX /* coop_sort_min: every sequence sorted per thread */

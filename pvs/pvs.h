@@ -38,6 +38,9 @@ typedef struct pvs_desc {
                                         subgroup-wide workgroup per pixel (bitonic), shorter ones per
                                         thread; 0: 8 (the paper's N) on a GPU, never on a CPU device;
                                         UINT32_MAX: never */
+    uint32_t max_tile_pixels;        /* the image is computed in tiles of at most this many pixels
+                                        (pvs/tiles.h; per-pixel memory follows the tile); 0: 512 x 512;
+                                        lowered to what maxStorageBufferRange allows */
 } pvs_desc;
 
 /* A double-cone viewcell with its widened field of view. fov_pvs_deg is the
@@ -55,6 +58,19 @@ typedef struct pvs_viewcell {
     float far_m;          /* far plane of the eyes' cameras, measured from v0 */
 } pvs_viewcell;
 
+/* One layer's share of a computation (docs/pvs-gpu-passes.md, "Cost per
+ * phase"). Pixel figures are summed over the image's tiles. */
+typedef struct pvs_layer_stats {
+    uint32_t triangles;          /* in the layer (P1's input) */
+    uint32_t fronts, backs;      /* triangles P1 passed to P2's draws (inside the frustum) */
+    uint32_t silhouettes;        /* trim regions: a trim quad (drawn 3 times) and an umbra quad each */
+    uint64_t active_pixels;      /* pixels P3 resolved */
+    uint64_t sequence_entries;   /* trim-sequence entries at those pixels (P3's sort input) */
+    uint64_t overflow_pixels;    /* of those, resolved by the overflow policy */
+    uint64_t kbuffer_bytes_used; /* k-buffer entries read by P3, in bytes */
+    double ms[3];                /* P1, P2, P3 (spill draws included): GPU timestamps summed over tiles */
+} pvs_layer_stats;
+
 typedef struct pvs_stats {
     double ms[5];                 /* P0..P4: P0, P4 CPU wall clock; P1-P3 GPU timestamps summed
                                      over layers (wall clock of the whole submission when the
@@ -70,6 +86,8 @@ typedef struct pvs_stats {
     uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */
     uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
     uint64_t coop_pixels;         /* pixel resolves whose sequences a workgroup sorted */
+    uint32_t tiles;               /* tiles the image was computed in (pvs_desc.max_tile_pixels) */
+    const pvs_layer_stats* per_layer; /* `layers` entries, owned by the context like pvs_result.ids */
 } pvs_stats;
 
 typedef struct pvs_result {
