@@ -81,8 +81,8 @@ typedef struct pvs_stats {
     uint32_t silhouettes;         /* trim regions emitted over all layers */
     uint64_t active_pixels;       /* active pixels resolved, summed over layers */
     double mean_sequence;         /* mean trim-sequence length (k-buffer entries) per resolve */
-    uint64_t kbuffer_bytes;       /* k-buffers allocated */
-    uint64_t kbuffer_bytes_used;  /* most k-buffer bytes filled in one layer */
+    uint64_t kbuffer_bytes;       /* k-buffers allocated (for one tile) */
+    uint64_t kbuffer_bytes_used;  /* most k-buffer bytes P3 read in one layer, over the whole image */
     uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */
     uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
     uint64_t coop_pixels;         /* pixel resolves whose sequences a workgroup sorted */
