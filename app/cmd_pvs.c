@@ -20,10 +20,21 @@ static void print_tr_stats(const pvs_stats* s)
            s->silhouettes);
     printf("active pixels     %llu (summed over layers), mean trim sequence %.2f, %llu sorted by a workgroup\n",
            (unsigned long long)s->active_pixels, s->mean_sequence, (unsigned long long)s->coop_pixels);
-    printf("k-buffers         %.1f MiB allocated, %.1f MiB used (largest layer)\n", s->kbuffer_bytes / 1048576.0,
-           s->kbuffer_bytes_used / 1048576.0);
+    printf("k-buffers         %.1f MiB allocated (%u tile%s), %.1f MiB used (largest layer)\n",
+           s->kbuffer_bytes / 1048576.0, s->tiles, s->tiles == 1 ? "" : "s", s->kbuffer_bytes_used / 1048576.0);
     printf("overflow          %llu pixels, %llu front fragments (handled conservatively)\n",
            (unsigned long long)s->overflow_pixels, (unsigned long long)s->overflow_fronts);
+    printf("per layer         tris: in the layer / fronts + backs drawn, regions: trim regions, active: pixels\n"
+           "                  resolved, seq: mean trim sequence, ovf: overflowing pixels, KiB: k-buffer entries read\n");
+    printf("%5s %8s %8s %8s %8s %8s %6s %6s %8s %9s %9s %9s\n", "layer", "tris", "fronts", "backs", "regions",
+           "active", "seq", "ovf", "KiB", "P1 ms", "P2 ms", "P3 ms");
+    for (uint32_t l = 0; s->per_layer && l < s->layers; l++) {
+        const pvs_layer_stats* p = &s->per_layer[l];
+        printf("%5u %8u %8u %8u %8u %8llu %6.2f %6llu %8.1f %9.2f %9.2f %9.2f\n", l, p->triangles, p->fronts,
+               p->backs, p->silhouettes, (unsigned long long)p->active_pixels,
+               p->active_pixels ? (double)p->sequence_entries / (double)p->active_pixels : 0.0,
+               (unsigned long long)p->overflow_pixels, p->kbuffer_bytes_used / 1024.0, p->ms[0], p->ms[1], p->ms[2]);
+    }
 }
 
 int tv_cmd_pvs(int argc, char** argv)
@@ -31,7 +42,7 @@ int tv_cmd_pvs(int argc, char** argv)
     const char *scene = NULL, *method = "tr", *ids_out = NULL;
     float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
-    int k = TV_ARGS_DEFAULT_K, coop_min = 0;
+    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
@@ -43,6 +54,8 @@ int tv_cmd_pvs(int argc, char** argv)
         TV_ARG_K(&k),
         {"coop-min", TV_ARG_INT, &coop_min, "N",
          "tr: sort trim sequences of >= N entries with a workgroup per pixel (default 8; 1000: never)"},
+        {"tile-pixels", TV_ARG_INT, &tile_pixels, "N",
+         "tr: compute the image in tiles of at most N pixels (default 262144 = 512x512)"},
         TV_ARG_METHOD(&method),
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
     };
@@ -52,10 +65,11 @@ int tv_cmd_pvs(int argc, char** argv)
         return r == TV_ARGS_HELP ? 0 : 2;
     /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
     pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k,
-                                 .coop_sort_min = (uint32_t)coop_min},
+                                 .coop_sort_min = (uint32_t)coop_min, .max_tile_pixels = (uint32_t)tile_pixels},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
-    if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0"))
+    if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
+        !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0"))
         return 2;
     if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc)) {
         tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "

@@ -165,6 +165,36 @@ pvs_request tv_eval_request(const tv_eval_cell* c, float eye_fov_deg)
     return req;
 }
 
+static void add_layer(pvs_layer_stats* sum, const pvs_layer_stats* x)
+{
+    sum->triangles += x->triangles;
+    sum->fronts += x->fronts;
+    sum->backs += x->backs;
+    sum->silhouettes += x->silhouettes;
+    sum->active_pixels += x->active_pixels;
+    sum->sequence_entries += x->sequence_entries;
+    sum->overflow_pixels += x->overflow_pixels;
+    sum->kbuffer_bytes_used += x->kbuffer_bytes_used;
+    for (int p = 0; p < 3; p++)
+        sum->ms[p] += x->ms[p];
+}
+
+/* The method's per-layer figures live until its next computation: the cell
+ * keeps a copy. */
+static void keep_layers(tv_eval_cell* c)
+{
+    const pvs_stats* t = &c->st.tr;
+    memset(c->layers, 0, sizeof c->layers);
+    c->layer_count = 0;
+    c->layer_cells = 1;
+    for (uint32_t l = 0; t->per_layer && l < t->layers; l++) {
+        uint32_t i = l < TV_EVAL_MAX_LAYERS ? l : TV_EVAL_MAX_LAYERS - 1;
+        add_layer(&c->layers[i], &t->per_layer[l]);
+        c->layer_count = i + 1;
+    }
+    c->st.tr.per_layer = NULL;
+}
+
 bool tv_eval_cell_run(pvs_method* m, rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu,
                       const pvs_eval_desc* ed, float eye_fov_deg, tv_eval_cell* c, uint8_t* mask, uint8_t* gt,
                       char* err, size_t err_size)
@@ -174,6 +204,7 @@ bool tv_eval_cell_run(pvs_method* m, rnd_context* rnd, const scn_scene* scene, c
     uint32_t count = 0;
     if (!pvs_method_compute(m, &req, &ids, &count, &c->st, err, err_size))
         return false;
+    keep_layers(c);
     c->pvs_ms = c->st.total_ms;
     memset(mask, 0, scene->triangle_count);
     for (uint32_t t = 0; t < count; t++)
@@ -228,6 +259,10 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
         tr->layers += xt->layers / (uint32_t)n;
         tr->active_pixels += xt->active_pixels / (uint64_t)n;
         tr->mean_sequence += xt->mean_sequence / n;
+        for (uint32_t l = 0; l < c[i].layer_count; l++)
+            add_layer(&r.layers[l], &c[i].layers[l]);
+        r.layer_count = c[i].layer_count > r.layer_count ? c[i].layer_count : r.layer_count;
+        r.layer_cells += c[i].layer_cells;
     }
     m->psnr_mean_db = mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
     return r;
@@ -279,5 +314,19 @@ void tv_eval_json_metrics(FILE* f, const tv_eval_cell* c, const char* indent)
     tv_json_num(f, "overflow_pixels", (double)tr->overflow_pixels, ", ");
     tv_json_num(f, "layers", tr->layers, ", ");
     tv_json_num(f, "active_pixels", (double)tr->active_pixels, ", ");
-    tv_json_num(f, "mean_trim_sequence", tr->mean_sequence, "");
+    tv_json_num(f, "mean_trim_sequence", tr->mean_sequence, ",\n");
+    /* means per viewcell, a layer a viewcell does not have counting as zero */
+    fprintf(f, "%s\"per_layer\": {\"columns\": [\"triangles\", \"fronts\", \"backs\", \"trim_regions\", "
+               "\"active_pixels\", \"sequence_entries\", \"overflow_pixels\", \"kbuffer_used_bytes\", \"p1_ms\", "
+               "\"p2_ms\", \"p3_ms\"],\n%s  \"rows\": [",
+            indent, indent);
+    const double n = c->layer_cells > 0 ? c->layer_cells : 1;
+    for (uint32_t l = 0; l < c->layer_count; l++) {
+        const pvs_layer_stats* p = &c->layers[l];
+        fprintf(f, "%s[%.6g, %.6g, %.6g, %.6g, %.6g, %.6g, %.6g, %.6g, %.6g, %.6g, %.6g]", l ? ", " : "",
+                p->triangles / n, p->fronts / n, p->backs / n, p->silhouettes / n, (double)p->active_pixels / n,
+                (double)p->sequence_entries / n, (double)p->overflow_pixels / n, (double)p->kbuffer_bytes_used / n,
+                p->ms[0] / n, p->ms[1] / n, p->ms[2] / n);
+    }
+    fprintf(f, "]}");
 }

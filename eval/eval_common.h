@@ -13,12 +13,20 @@
 #include <stddef.h>
 #include <stdio.h>
 
+/* Layers whose figures a cell keeps; later ones are added to the last. */
+#define TV_EVAL_MAX_LAYERS 96
+
 typedef struct tv_eval_cell {
     pred_viewcell vc;
     double motion[3];   /* the sas samples' segment: 2 delta along the direction of travel */
     pvs_eval_result m;
-    pvs_method_stats st;
+    pvs_method_stats st; /* st.tr.per_layer is NULL: the figures are in layers */
     double pvs_ms;
+    /* tr: per-layer figures summed over layer_cells viewcells (1 for one
+     * cell; tv_eval_mean sums), layer_count entries */
+    pvs_layer_stats layers[TV_EVAL_MAX_LAYERS];
+    uint32_t layer_count;
+    int layer_cells;
 } tv_eval_cell;
 
 /* One viewcell every `every` display frames (90 Hz) of the path in `file`,

@@ -39,6 +39,9 @@ typedef struct pvs_desc {
                                         subgroup-wide workgroup per pixel (bitonic), shorter ones per
                                         thread; 0: 8 (the paper's N) on a GPU, never on a CPU device;
                                         UINT32_MAX: never */
+    uint32_t max_tile_pixels;        /* the image is computed in tiles of at most this many pixels
+                                        (pvs/tiles.h; per-pixel memory follows the tile); 0: 512 x 512;
+                                        lowered to what maxStorageBufferRange allows */
 } pvs_desc;
 
 /* The apex may lie at most pvs_max_apex_offset(near_m) behind v0, that is
@@ -53,6 +56,19 @@ typedef struct pvs_desc {
 #define PVS_MAX_DEPTH_STEP_M 0.006f
 float pvs_max_apex_offset(float near_m);
 
+/* One layer's share of a computation (docs/pvs-gpu-passes.md, "Cost per
+ * phase"). Pixel figures are summed over the image's tiles. */
+typedef struct pvs_layer_stats {
+    uint32_t triangles;          /* in the layer (P1's input) */
+    uint32_t fronts, backs;      /* triangles P1 passed to P2's draws (inside the frustum) */
+    uint32_t silhouettes;        /* trim regions: a trim quad (drawn 3 times) and an umbra quad each */
+    uint64_t active_pixels;      /* pixels P3 resolved */
+    uint64_t sequence_entries;   /* trim-sequence entries at those pixels (P3's sort input) */
+    uint64_t overflow_pixels;    /* of those, resolved by the overflow policy */
+    uint64_t kbuffer_bytes_used; /* k-buffer entries read by P3, in bytes */
+    double ms[3];                /* P1, P2, P3 (spill draws included): GPU timestamps summed over tiles */
+} pvs_layer_stats;
+
 typedef struct pvs_stats {
     double ms[5];                 /* P0..P4: P0, P4 CPU wall clock; P1-P3 GPU timestamps summed
                                      over layers (wall clock of the whole submission when the
@@ -63,11 +79,13 @@ typedef struct pvs_stats {
     uint32_t silhouettes;         /* trim regions emitted over all layers */
     uint64_t active_pixels;       /* active pixels resolved, summed over layers */
     double mean_sequence;         /* mean trim-sequence length (k-buffer entries) per resolve */
-    uint64_t kbuffer_bytes;       /* k-buffers allocated */
-    uint64_t kbuffer_bytes_used;  /* most k-buffer bytes filled in one layer */
+    uint64_t kbuffer_bytes;       /* k-buffers allocated (for one tile) */
+    uint64_t kbuffer_bytes_used;  /* most k-buffer bytes P3 read in one layer, over the whole image */
     uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */
     uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
     uint64_t coop_pixels;         /* pixel resolves whose sequences a workgroup sorted */
+    uint32_t tiles;               /* tiles the image was computed in (pvs_desc.max_tile_pixels) */
+    const pvs_layer_stats* per_layer; /* `layers` entries, owned by the context like pvs_result.ids */
 } pvs_stats;
 
 typedef struct pvs_result {

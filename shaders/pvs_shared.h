@@ -173,7 +173,8 @@
 #define TV_PVS_BIND_ACTIVE_LIST 15 // pixel indices activated in this layer
 #define TV_PVS_BIND_TRI_FLAGS  16 // uint per triangle: 1 = in the PVS
 #define TV_PVS_BIND_VIS_IDS    17 // r32ui storage image: the visibility buffer's ids
-#define TV_PVS_BIND_LAYER_STATS 18 // uvec4 per layer: entries, active pixels, sequence sum, overflows
+#define TV_PVS_BIND_LAYER_STATS 18 // TV_PVS_LAYER_STATS_STRIDE uvec4 per layer: P3's (bytes stored, active pixels, sequence sum, overflows), P1's (vertex counts of the FF, BF and trim draws, 0)
+#define TV_PVS_LAYER_STATS_STRIDE 2
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
 #define TV_PVS_BIND_CENTRE_DEPTH 20 // TV_PVS_CENTRE_STRIDE uints per pixel: nearest depth bits of the faces covering its centre
 #define TV_PVS_CENTRE_FRONT   0u // slots of a pixel's TV_PVS_BIND_CENTRE_DEPTH entry (P2's exact pass, atomicMin)
