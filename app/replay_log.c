@@ -108,11 +108,15 @@ double tv_replay_log_worst_psnr(const tv_replay_log* log)
     return tv_percentile(log->psnr.v, log->psnr.n, 0.0);
 }
 
-/* JSON has no infinity: identical images are written as null and counted separately */
+/* JSON has no infinity: identical images (PSNR +inf) are written as the
+ * string "inf", and null means not a number (a broken metric), so a reader
+ * cannot take one for the other. */
 static void json_number(FILE* f, const char* key, double v, bool last)
 {
     if (isfinite(v))
         fprintf(f, "  \"%s\": %.6g%s\n", key, v, last ? "" : ",");
+    else if (isinf(v))
+        fprintf(f, "  \"%s\": \"%s\"%s\n", key, v > 0 ? "inf" : "-inf", last ? "" : ",");
     else
         fprintf(f, "  \"%s\": null%s\n", key, last ? "" : ",");
 }
