@@ -9,6 +9,8 @@
 # better = higher: regression when got < expected - abs - rel * |expected|
 # better = lower:  regression when got > expected + abs + rel * |expected|
 # better = equal:  regression when got != expected (run settings, such as the frame count)
+# better = near:   regression when |got - expected| > abs + rel * |expected| (both ways: a
+#                  PVS that shrinks is as suspect as one that grows)
 # "inf" is an infinite PSNR (every frame identical): the best possible for
 # "higher", compared as +inf. null (not a number: a broken metric) and a
 # missing value always fail. update keeps each metric's
@@ -21,10 +23,10 @@ DEFAULTS='frames equal 0 0
 psnr_mean_db higher 0.5 0
 psnr_p5_db higher 1.0 0
 psnr_min_db higher 2.0 0
-fn_pixels_mean lower 2 0.10
-fn_pixels_max lower 10 0.25
+fn_pixels_mean lower 0 0
+fn_pixels_max lower 0 0
 viewcell_miss_frames lower 0 0
-pvs_fraction_mean lower 0.002 0.10'
+pvs_fraction_mean near 0 0.01'
 
 # prints the value of "key" in a flat JSON file ("inf" for an infinite PSNR); exit 1 if absent
 value() {
@@ -89,6 +91,7 @@ check)
             else if ((got !~ number && got != "\"inf\"") || (exp_v !~ number && exp_v != "\"inf\"")) { ok = 0; lim = "a number" }
             else if (better == "higher") { lim = e >= big ? ">= inf" : sprintf(">= %.4g", e - slack); ok = g >= e - slack }
             else if (better == "lower") { lim = sprintf("<= %.4g", e + slack); ok = g <= e + slack }
+            else if (better == "near") { lim = sprintf("%.4g..%.4g", e - slack, e + slack); ok = g >= e - slack && g <= e + slack }
             else { lim = sprintf("== %s", exp_v); ok = g == e }
             note = ""
             if (ok && better == "higher" && e < big && g > e + slack) note = " (better: consider updating)"
