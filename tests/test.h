@@ -18,13 +18,12 @@ static int tv_test_failures;
 static int tv_test_case_failed;
 static int tv_test_passed_cases;
 static int tv_test_failed_cases;
-static int tv_test_case_skipped;
 static int tv_test_skipped_cases;
 
 #define TV_TEST_SKIP(why)                      \
     do {                                       \
         printf("  skip: %s\n", (why));        \
-        tv_test_case_skipped = 1;              \
+        tv_test_skipped_cases++;               \
     } while (0)
 
 #define TV_CHECK(expr)                                                              \
@@ -52,10 +51,12 @@ static int tv_test_skipped_cases;
         const char* tv_only_ = getenv("TV_TEST_ONLY");       \
         if (tv_only_ && !strstr(#fn, tv_only_))              \
             break;                                           \
+        int tv_skipped_before_ = tv_test_skipped_cases;      \
         tv_test_case_failed = 0;                             \
-        tv_test_case_skipped = 0;                            \
         fn();                                                \
-        if (tv_test_case_skipped && !tv_test_case_failed) {  \
+        int tv_skipped_ = tv_test_skipped_cases > tv_skipped_before_; \
+        tv_test_skipped_cases = tv_skipped_before_;          \
+        if (tv_skipped_ && !tv_test_case_failed) {           \
             tv_test_skipped_cases++;                         \
             printf("skip %s\n", #fn);                        \
         } else if (tv_test_case_failed) {                    \
