@@ -1,5 +1,5 @@
 /* fuzz_q3vis.c - libFuzzer target for the q3 vis JSON parser
- * (pvs/q3vis_parse.c), straight from memory (the input is not
+ * (eval/q3vis_parse.c), straight from memory (the input is not
  * NUL-terminated). A parsed table has visdata for every cluster pair and
  * leaves whose cluster is in range. */
 #include "fuzz_common.h"

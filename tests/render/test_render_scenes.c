@@ -12,7 +12,7 @@
  * with   TRIMVR_UPDATE_GOLDEN=1 ctest -R render_scenes
  * On a mismatch the render is written to <build>/tests/render/<scene>.actual.png
  * (and -ids.actual.png). */
-#include "config.h"
+#include "mesh_shared.h"
 #include "image_compare.h"
 #include "image_io.h"
 #include "procedural.h"
