@@ -10,8 +10,9 @@ extern "C" {
 #endif
 
 /* Writes "key": value and then tail (such as ",\n"). JSON has no infinity:
- * a non-finite value (an infinite PSNR of identical images) is written as
- * null. */
+ * an infinite value (the PSNR of identical images) is written as the string
+ * "inf" (or "-inf"), and null means not a number (a broken metric), so that
+ * no reader can take one for the other. */
 void tv_json_num(FILE* f, const char* key, double v, const char* tail);
 
 #ifdef __cplusplus

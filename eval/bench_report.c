@@ -82,7 +82,8 @@ static bool write_csv(const char* dir, const tv_bench_row* rows, int n, char* er
         row_values(&rows[i], v);
         fprintf(f, "%s,%s", rows[i].scene, pvs_method_name(rows[i].method));
         for (int c = 0; c < COL_COUNT; c++)
-            fprintf(f, isfinite(v[c]) ? ",%.6g" : ",", v[c]); /* empty: infinite PSNR or no denominator */
+            /* "inf": identical images; empty: not a number (no denominator) */
+            fprintf(f, isfinite(v[c]) ? ",%.6g" : isinf(v[c]) ? ",inf" : ",", v[c]);
         fprintf(f, "\n");
     }
     return close_out(f, path, err, err_size);

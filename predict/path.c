@@ -118,6 +118,10 @@ static bool _parse(char* text, pred_path* out, const char* file, char* err, size
                 return false;
             continue;
         }
+        if (!cursor)
+            return pred_text_fail(err, err_size, file, line_no,
+                                  "last line has no newline (was the file cut short?); end the file with a newline "
+                                  "if the line is complete");
         double v[COL_COUNT];
         if (!_parse_row(s, field_col, field_count, v, file, line_no, err, err_size))
             return false;

@@ -16,6 +16,13 @@
 extern "C" {
 #endif
 
+/* Largest image the readers accept, checked on the header before any pixel
+ * memory is allocated: a few-byte file can claim 2^31 x 2^31 pixels. 16384
+ * is the usual Vulkan maxImageDimension2D; 2^26 pixels (256 MiB as RGBA8)
+ * bounds what one texture may cost. Every image backend applies both. */
+#define SCN_IMAGE_MAX_SIDE 16384u
+#define SCN_IMAGE_MAX_PIXELS (1u << 26)
+
 /* Reads an image file into a new RGBA8 buffer (*width * *height * 4 bytes,
  * rows top to bottom; missing channels: grey -> RGB, alpha = 255). Free the
  * buffer with scn_image_free(). */

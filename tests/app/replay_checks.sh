@@ -2,7 +2,9 @@
 # Assertions on `trimvr replay` outputs, in POSIX sh + awk (no Python on a
 # fresh Debian). Usage:
 #   replay_checks.sh summary DIR 'key op value'...   e.g. 'viewcell_miss_frames == 0'
-#       (a null value, written for +inf PSNR, compares as +inf)
+#       ("inf", written for the PSNR of identical images, compares as +inf;
+#       null, a metric that is not a number, fails every comparison;
+#       'psnr_min_db == inf' asserts identical images)
 #   replay_checks.sh csv DIR MIN_ROWS                frames.csv well formed, >= MIN_ROWS rows
 #   replay_checks.sh same DIR1 DIR2                  frames.csv equal except wall-clock columns
 #   replay_checks.sh interrupt DIR SECONDS command...  kill -9 the command mid-run, then check csv
@@ -79,8 +81,10 @@ summary)
         awk -v key="$1" -v op="$2" -v want="$3" '
             !found && match($0, "\"" key "\": *[^,}]+") {
                 v = substr($0, RSTART, RLENGTH); sub(/^[^:]*: */, "", v); found = 1
-                inf = (v == "null"); x = v + 0
-                if (op == "==") ok = !inf && x == want
+                inf = (v == "\"inf\""); x = v + 0
+                if (v == "null" || (v !~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/ && !inf)) ok = 0
+                else if (want == "inf") ok = inf && op == "=="
+                else if (op == "==") ok = !inf && x == want
                 else if (op == ">=") ok = inf || x >= want
                 else if (op == "<=") ok = !inf && x <= want
                 else if (op == ">") ok = inf || x > want

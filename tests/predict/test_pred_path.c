@@ -74,6 +74,8 @@ static void test_errors_name_file_and_line(void)
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n#x\n0.5,0,0,0,0,0,0,1\n0.2,0,0,0,0,0,0,1\n",
          ":5: time 0.2 goes backwards (previous 0.5 on line 4)"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n0,0,0,0,0,0,0,1\n", ":3: duplicate time 0 (also on line 2)"},
+        /* a file cut in its last number ("0.9" of "0.95") still parses: refuse a last row without newline */
+        {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,0,0,0,0,0,0,0.9", ":3: last line has no newline"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         pred_path path;
