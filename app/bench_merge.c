@@ -8,11 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int by_unit_then_index(const void* a, const void* b)
+static int by_row_then_index(const void* a, const void* b)
 {
     const tv_bench_cell *x = a, *y = b;
-    if (x->unit != y->unit)
-        return (x->unit > y->unit) - (x->unit < y->unit);
+    if (x->row != y->row)
+        return (x->row > y->row) - (x->row < y->row);
     return (x->index > y->index) - (x->index < y->index);
 }
 
@@ -88,11 +88,11 @@ static bool write_merged(const tv_bench_part* p, int n, const char* out)
             snprintf(devices + strlen(devices), sizeof devices - strlen(devices), "%s%s", devices[0] ? "; " : "",
                      p[i].device);
     }
-    qsort(cells, (size_t)total, sizeof *cells, by_unit_then_index);
+    qsort(cells, (size_t)total, sizeof *cells, by_row_then_index);
     bool ok = true;
     for (int i = 1; ok && i < total; i++)
-        if (by_unit_then_index(&cells[i - 1], &cells[i]) == 0) {
-            fprintf(stderr, "trimvr bench merge: error: unit %d viewcell %d appears twice\n", cells[i].unit,
+        if (by_row_then_index(&cells[i - 1], &cells[i]) == 0) {
+            fprintf(stderr, "trimvr bench merge: error: row %d viewcell %d appears twice\n", cells[i].row,
                     cells[i].index);
             ok = false;
         }

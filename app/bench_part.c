@@ -110,7 +110,7 @@ bool tv_bench_part_write(const char* file, const tv_bench_part* p, char* err, si
     fprintf(f, "],\n  \"cells\": [");
     for (int i = 0; i < p->count; i++) {
         const tv_bench_cell* c = &p->cells[i];
-        fprintf(f, "%s\n    {\"unit\": %d, \"index\": %d, \"scene\": ", i ? "," : "", c->unit, c->index);
+        fprintf(f, "%s\n    {\"row\": %d, \"index\": %d, \"scene\": ", i ? "," : "", c->row, c->index);
         put_string(f, c->scene);
         fprintf(f, ", \"method\": \"%s\", \"delta\": %.9g, \"v\": [", pvs_method_name(c->method), c->delta);
         for (int k = 0; k < FIELD_COUNT; k++) {
@@ -192,8 +192,8 @@ static bool read_cell(const tv_json* j, tv_bench_cell* c)
 {
     const tv_json* v = tv_json_get(j, "v");
     double delta;
-    if (!get_int(tv_json_get(j, "unit"), &c->unit) || !get_int(tv_json_get(j, "index"), &c->index) ||
-        c->unit < 0 || c->index < 0 || !copy_string(tv_json_get(j, "scene"), c->scene, sizeof c->scene) ||
+    if (!get_int(tv_json_get(j, "row"), &c->row) || !get_int(tv_json_get(j, "index"), &c->index) ||
+        c->row < 0 || c->index < 0 || !copy_string(tv_json_get(j, "scene"), c->scene, sizeof c->scene) ||
         !get_double(tv_json_get(j, "delta"), &delta) || !tv_json_get(j, "method") ||
         tv_json_get(j, "method")->type != TV_JSON_STRING ||
         !pvs_method_from_name(tv_json_get(j, "method")->str, &c->method) || !v || v->type != TV_JSON_ARRAY ||

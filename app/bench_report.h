@@ -13,7 +13,7 @@
 /* One viewcell of one grid cell (scene x method x delta): what a run
  * measures, what part files carry, and what rows are aggregated from. */
 typedef struct tv_bench_cell {
-    int unit;               /* grid cell index in run order (scene, method, delta) */
+    int row;                /* report row in run order (scene, method, delta; app/bench_shard.h) */
     int index;              /* viewcell index within the scene */
     char scene[64];
     pvs_method_kind method;
@@ -41,7 +41,7 @@ typedef struct tv_bench_row {
     int worst_index;        /* its index within the scene */
 } tv_bench_row;
 
-/* Rows from viewcell results sorted by (unit, index): one row per unit,
+/* Rows from viewcell results sorted by (row, index): one row per row index,
  * means (tv_eval_mean), intervals and the worst cell. Full-render time is
  * the median of every viewcell's draws. malloc'ed into *rows; returns the
  * count, -1 when out of memory. */

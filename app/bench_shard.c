@@ -4,16 +4,17 @@
 #include <string.h>
 
 int tv_bench_units(char* const* scenes, int nscene, const pvs_method_kind* methods, int nmethod, int ndelta,
-                   tv_bench_unit* units)
+                   int max_cells, int cells_per_unit, tv_bench_unit* units)
 {
-    int n = 0;
+    int n = 0, row = 0, step = cells_per_unit > 0 ? cells_per_unit : max_cells;
     for (int s = 0; s < nscene; s++)
         for (int m = 0; m < nmethod; m++) {
             if (methods[m] == PVS_METHOD_Q3VIS && strncmp(scenes[s], "oa:", 3) != 0)
                 continue;
-            for (int d = 0; d < ndelta; d++, n++)
-                if (units)
-                    units[n] = (tv_bench_unit){s, m, d};
+            for (int d = 0; d < ndelta; d++, row++)
+                for (int c = 0; c < max_cells; c += step, n++)
+                    if (units)
+                        units[n] = (tv_bench_unit){s, m, d, row, c, c + step < max_cells ? c + step : max_cells};
         }
     return n;
 }

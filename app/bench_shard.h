@@ -1,8 +1,9 @@
 /* bench_shard.h - the grid of a `trimvr bench` sweep and its slices
- * (docs/bench.md). A unit is one scene x method x delta, numbered in run
+ * (docs/bench.md). A row is one scene x method x delta, numbered in run
  * order: scenes as listed, then methods as listed, then deltas; q3vis exists
- * on oa: scenes only. The numbering depends on the options alone (no file is
- * opened), so every shard of a sweep agrees on it. */
+ * on oa: scenes only. A unit is a row's viewcells, or with cells_per_unit a
+ * run of that many of them. The numbering depends on the options alone (no
+ * file is opened), so every shard of a sweep agrees on it. */
 #ifndef TRIMVR_APP_BENCH_SHARD_H
 #define TRIMVR_APP_BENCH_SHARD_H
 
@@ -13,11 +14,15 @@
 
 typedef struct tv_bench_unit {
     int scene, method, delta; /* indices into the option lists */
+    int row;                  /* the report row it belongs to */
+    int first_cell, end_cell; /* its viewcells: [first_cell, end_cell) of the scene's (at most max_cells) */
 } tv_bench_unit;
 
-/* Fills units (may be NULL) and returns how many there are. */
+/* Fills units (may be NULL) and returns how many there are: one per row
+ * when cells_per_unit is 0, else ceil(max_cells / cells_per_unit) per row
+ * (a unit past a scene's last viewcell is empty). max_cells >= 1. */
 int tv_bench_units(char* const* scenes, int nscene, const pvs_method_kind* methods, int nmethod, int ndelta,
-                   tv_bench_unit* units);
+                   int max_cells, int cells_per_unit, tv_bench_unit* units);
 
 /* Parses --shard "I/N" with 0 <= I < N. */
 bool tv_bench_shard_parse(const char* s, int* i, int* n);

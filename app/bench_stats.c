@@ -57,7 +57,7 @@ int tv_bench_rows(const tv_bench_cell* cells, int n, tv_bench_row** rows)
 {
     int groups = 0;
     for (int i = 0; i < n; i++)
-        groups += i == 0 || cells[i].unit != cells[i - 1].unit;
+        groups += i == 0 || cells[i].row != cells[i - 1].row;
     *rows = calloc((size_t)groups + 1, sizeof **rows);
     tv_eval_cell* ec = malloc(((size_t)n + 1) * sizeof *ec);
     double* scratch = malloc(((size_t)n + 1) * 6 * sizeof *scratch);
@@ -68,7 +68,7 @@ int tv_bench_rows(const tv_bench_cell* cells, int n, tv_bench_row** rows)
     }
     for (int first = 0, g = 0; groups > 0 && first < n; g++) {
         int end = first + 1;
-        while (end < n && cells[end].unit == cells[first].unit)
+        while (end < n && cells[end].row == cells[first].row)
             end++;
         fill_row(&cells[first], end - first, ec, scratch, &(*rows)[g]);
         first = end;

@@ -29,7 +29,7 @@
 typedef struct bench_opts {
     const char *scenes, *deltas, *methods, *pos, *out, *shard;
     float dir[3], fov, fov_pvs;
-    int every, max_cells, samples, k;
+    int every, max_cells, cells_per_job, samples, k;
     unsigned res[2], pvs_res[2];
     bool jobs;
 } bench_opts;
@@ -55,9 +55,9 @@ typedef struct bench_run {
     int npos;
     char scene_buf[1024], *scenes[MAX_LIST];
     int nscene;
-    tv_bench_unit units[MAX_LIST * PVS_METHOD_COUNT * MAX_LIST];
+    tv_bench_unit* units;
     int nunits, first, end; /* this run's slice of units: [first, end) */
-    tv_bench_cell* cells;   /* results in unit order */
+    tv_bench_cell* cells;   /* results in row order */
     int ncells, cap;
     double t0;
     char device[256];
@@ -133,13 +133,20 @@ static const char* elapsed(const bench_run* b, char* buf, size_t size)
     return buf;
 }
 
-/* The unit of (scene, method, delta) when it lies in this run's slice, else -1. */
-static int unit_in_slice(const bench_run* b, int scene, int method, int delta)
+/* The row of (scene, method, delta) when some of its viewcells lie in this
+ * run's slice (those are [*lo, *hi): the slice is contiguous), else -1. */
+static int row_in_slice(const bench_run* b, int scene, int method, int delta, int* lo, int* hi)
 {
-    for (int u = b->first; u < b->end; u++)
-        if (b->units[u].scene == scene && b->units[u].method == method && b->units[u].delta == delta)
-            return u;
-    return -1;
+    int row = -1;
+    for (int u = b->first; u < b->end; u++) {
+        const tv_bench_unit* x = &b->units[u];
+        if (x->scene != scene || x->method != method || x->delta != delta)
+            continue;
+        *lo = row < 0 ? x->first_cell : *lo;
+        *hi = x->end_cell;
+        row = x->row;
+    }
+    return row;
 }
 
 static bool append_cell(bench_run* b, const tv_bench_cell* c)
@@ -156,12 +163,12 @@ static bool append_cell(bench_run* b, const tv_bench_cell* c)
     return true;
 }
 
-/* The progress line of the unit whose viewcells end the results. */
-static void print_unit(const bench_run* b, int n)
+/* The progress line of the last n viewcell results (one row's). */
+static void print_row(const bench_run* b, int n)
 {
     tv_bench_row* r;
     char t[32];
-    if (tv_bench_rows(&b->cells[b->ncells - n], n, &r) != 1)
+    if (n < 1 || tv_bench_rows(&b->cells[b->ncells - n], n, &r) != 1)
         return;
     const pvs_eval_result* x = &r->mean.m;
     fprintf(stderr, "bench %s: %-9s delta %4.2f: %d cells, PVS %.2f%% (GT %.2f%%), FP %.3f, FN %.4f, "
@@ -193,8 +200,8 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
     pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1]};
     bool ok = true, warm = false;
     for (int d = 0; d < b->ndelta && ok; d++) {
-        int unit = unit_in_slice(b, scene, method, d);
-        if (unit < 0)
+        int lo = 0, hi = 0, row = row_in_slice(b, scene, method, d, &lo, &hi), done = 0;
+        if (row < 0)
             continue;
         tv_eval_cell* cells = NULL;
         int n = scene_cells(b, spec, s, b->deltas[d], &cells);
@@ -204,15 +211,16 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
                     cells[i].vc.v0[0], cells[i].vc.v0[1], cells[i].vc.v0[2], cells[i].vc.forward[0],
                     cells[i].vc.forward[1], cells[i].vc.forward[2]);
         b->cells_printed = b->cells_printed || ok;
-        if (ok && !warm) { /* the first PVS builds what is cached per scene (octree, pipelines) */
-            pvs_request req = tv_eval_request(&cells[0], o->fov);
+        hi = hi < n ? hi : n;
+        if (ok && !warm && lo < hi) { /* the first PVS builds what is cached per scene (octree, pipelines) */
+            pvs_request req = tv_eval_request(&cells[lo], o->fov);
             uint32_t *ids = NULL, count;
             ok = pvs_method_compute(m, &req, &ids, &count, NULL, err, sizeof err);
             free(ids);
             warm = true;
         }
-        for (int i = 0; ok && i < n; i++) {
-            tv_bench_cell c = {.unit = unit, .index = i, .method = kind, .delta = b->deltas[d]};
+        for (int i = lo; ok && i < hi; i++, done++) {
+            tv_bench_cell c = {.row = row, .index = i, .method = kind, .delta = b->deltas[d]};
             snprintf(c.scene, sizeof c.scene, "%s", spec);
             ok = tv_eval_cell_run(m, s, &ed, o->fov, &cells[i], mask, gt, err, sizeof err);
             if (ok) {
@@ -220,14 +228,14 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
                 full_render_ms(o, s, target, &cells[i], c.full_ms);
                 if (!append_cell(b, &c))
                     snprintf(err, sizeof err, "out of memory");
-                ok = b->ncells > 0 && b->cells[b->ncells - 1].unit == unit && b->cells[b->ncells - 1].index == i;
+                ok = b->ncells > 0 && b->cells[b->ncells - 1].row == row && b->cells[b->ncells - 1].index == i;
             }
         }
         if (!ok && n > 0)
             fprintf(stderr, "trimvr bench: error: %s, %s, delta %.2f: %s\n", spec, pvs_method_name(kind),
                     b->deltas[d], err);
         if (ok)
-            print_unit(b, n);
+            print_row(b, done);
         free(cells);
     }
     if (target)
@@ -304,9 +312,9 @@ static bool parse_lists(const bench_opts* o, bench_run* b)
 static void settings_of(const bench_opts* o, char* buf, size_t size)
 {
     snprintf(buf, size,
-             "scenes=%s;deltas=%s;methods=%s;path-every=%d;max-cells=%d;pos=%s;dir=%.9g,%.9g,%.9g;samples=%d;"
-             "res=%ux%u;pvs-res=%ux%u;k=%d;fov=%.9g;fov-pvs=%.9g",
-             o->scenes, o->deltas, o->methods, o->every, o->max_cells, o->pos ? o->pos : "", o->dir[0], o->dir[1],
+             "scenes=%s;deltas=%s;methods=%s;path-every=%d;max-cells=%d;cells-per-job=%d;pos=%s;dir=%.9g,%.9g,%.9g;"
+             "samples=%d;res=%ux%u;pvs-res=%ux%u;k=%d;fov=%.9g;fov-pvs=%.9g",
+             o->scenes, o->deltas, o->methods, o->every, o->max_cells, o->cells_per_job, o->pos ? o->pos : "", o->dir[0], o->dir[1],
              o->dir[2], o->samples, o->res[0], o->res[1], o->pvs_res[0], o->pvs_res[1], o->k, o->fov, o->fov_pvs);
 }
 
@@ -383,6 +391,8 @@ int tv_cmd_bench(int argc, char** argv)
         {"fov-pvs", TV_ARG_FLOAT, &o.fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
         {"out", TV_ARG_STRING, &o.out, "DIR", "output folder (default out/bench); with --shard: its part file's"},
         {"jobs", TV_ARG_FLAG, &o.jobs, NULL, "print one command per scene x method x delta (each a --shard) and exit"},
+        {"cells-per-job", TV_ARG_INT, &o.cells_per_job, "K",
+         "with --jobs/--shard: split each scene x method x delta into jobs of K viewcells (default 0: whole)"},
         {"shard", TV_ARG_STRING, &o.shard, "I/N", "run slice I of N of the grid and write DIR/part-I.json"},
     };
     const char* summary =
@@ -398,16 +408,13 @@ int tv_cmd_bench(int argc, char** argv)
         return r == TV_ARGS_HELP ? 0 : 2;
     if (!o.pvs_res[0])
         o.pvs_res[0] = o.pvs_res[1] = 512;
-    static bench_run b; /* large (the unit table); one per process */
-    memset(&b, 0, sizeof b);
-    b.o = &o;
-    b.t0 = tv_now_ms();
+    bench_run b = {.o = &o, .t0 = tv_now_ms()};
     if (!parse_lists(&o, &b))
         return 2;
     float dir_len = sqrtf(o.dir[0] * o.dir[0] + o.dir[1] * o.dir[1] + o.dir[2] * o.dir[2]);
-    if (o.every < 0 || o.samples < 1 || o.k < 0 || o.max_cells < 1 || !(o.fov > 0.0f && o.fov <= o.fov_pvs) ||
+    if (o.every < 0 || o.samples < 1 || o.k < 0 || o.max_cells < 1 || o.cells_per_job < 0 || !(o.fov > 0.0f && o.fov <= o.fov_pvs) ||
         !(o.fov_pvs < 179.0f) || !(dir_len > 0.0f)) {
-        fprintf(stderr, "trimvr bench: error: need --path-every >= 0, --samples, --max-cells >= 1, --k >= 0 and "
+        fprintf(stderr, "trimvr bench: error: need --path-every, --cells-per-job >= 0, --samples, --max-cells >= 1, --k >= 0, "
                         "0 < --fov <= --fov-pvs < 179 and a non-zero --dir (see trimvr bench --help)\n");
         return 2;
     }
@@ -418,17 +425,22 @@ int tv_cmd_bench(int argc, char** argv)
         return 2;
     }
     b.nscene = split(o.scenes, b.scene_buf, sizeof b.scene_buf, b.scenes, ',');
-    b.nunits = tv_bench_units(b.scenes, b.nscene, b.methods, b.nmethod, b.ndelta, b.units);
+    int cells = b.npos > 0 ? b.npos : o.max_cells; /* the most viewcells a scene can have */
+    b.nunits = tv_bench_units(b.scenes, b.nscene, b.methods, b.nmethod, b.ndelta, cells, o.cells_per_job, NULL);
+    if (!(b.units = malloc(((size_t)b.nunits + 1) * sizeof *b.units))) {
+        fprintf(stderr, "trimvr bench: error: out of memory for %d units\n", b.nunits);
+        return 1;
+    }
+    tv_bench_units(b.scenes, b.nscene, b.methods, b.nmethod, b.ndelta, cells, o.cells_per_job, b.units);
     if (o.jobs) { /* main passes argv + 2: argv[-2] is the program as the user invoked it */
         tv_bench_print_jobs(stdout, argv[-2], argc, argv, b.nunits);
+        free(b.units);
         return 0;
     }
     tv_bench_slice(b.nunits, shard, shards, &b.first, &b.end);
-    if (!tv_mkdirs(o.out)) {
+    bool ok = tv_mkdirs(o.out);
+    if (!ok)
         fprintf(stderr, "trimvr bench: error: %s: cannot create the output folder\n", o.out);
-        return 1;
-    }
-    bool ok = true;
     for (int i = 0; i < b.nscene && ok; i++)
         ok = bench_scene(&b, i);
     char cmd[4096] = "trimvr bench", date[64]; /* without --shard: the sweep's command, the same in every part */
@@ -444,5 +456,6 @@ int tv_cmd_bench(int argc, char** argv)
     if (ok)
         ok = o.shard ? write_part(&b, cmd, date, shard, shards) : write_report(&b, cmd, date);
     free(b.cells);
+    free(b.units);
     return ok ? 0 : 1;
 }

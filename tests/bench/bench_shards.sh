@@ -1,7 +1,8 @@
 #!/bin/sh
 # Sharded trimvr bench (docs/bench.md), as cli_bench_parallel runs it:
 #   bench_shards.sh TRIMVR OUT OPTIONS...
-# runs the sweep OPTIONS serially and as `--jobs` shards under GNU parallel
+# runs the sweep OPTIONS serially and as `--jobs --cells-per-job 1` shards
+# (one viewcell each) under GNU parallel
 # -j2, merges the parts, and requires bench.csv of both to be equal in every
 # column but the timings (*_ms, pvs_over_full). Then the merge's refusals,
 # each exit status 1 with one line naming the file: parts of another
@@ -15,7 +16,7 @@ rm -rf "$out" && mkdir -p "$out" || exit 1
 t0=$(date +%s)
 "$trimvr" bench "$@" --out "$out/serial" >"$out/serial.log" 2>&1 || { tail -5 "$out/serial.log"; echo "FAIL: serial run"; exit 1; }
 t1=$(date +%s)
-"$trimvr" bench "$@" --out "$out/parts" --jobs >"$out/jobs.txt" || { echo "FAIL: --jobs"; exit 1; }
+"$trimvr" bench "$@" --out "$out/parts" --jobs --cells-per-job 1 >"$out/jobs.txt" || { echo "FAIL: --jobs"; exit 1; }
 parallel --will-cite -j2 <"$out/jobs.txt" >"$out/parallel.log" 2>&1 || { tail -5 "$out/parallel.log"; echo "FAIL: a shard failed"; exit 1; }
 t2=$(date +%s)
 "$trimvr" bench merge --out "$out/merged" "$out"/parts/part-*.json || { echo "FAIL: merge"; exit 1; }
