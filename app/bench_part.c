@@ -210,7 +210,7 @@ static bool read_header(const tv_json* doc, tv_bench_part* p)
 {
     const tv_json* fmt = tv_json_get(doc, "format");
     double fov, fov_pvs;
-    return fmt && fmt->type == TV_JSON_STRING && strcmp(fmt->str, FORMAT) == 0 &&
+    bool ok = fmt && fmt->type == TV_JSON_STRING && strcmp(fmt->str, FORMAT) == 0 &&
            copy_string(tv_json_get(doc, "version"), p->version, sizeof p->version) &&
            copy_string(tv_json_get(doc, "settings"), p->settings, sizeof p->settings) &&
            copy_string(tv_json_get(doc, "command"), p->command, sizeof p->command) &&
@@ -220,8 +220,10 @@ static bool read_header(const tv_json* doc, tv_bench_part* p)
            p->shards >= 1 && p->shard >= 0 && p->shard < p->shards &&
            get_double(tv_json_get(doc, "wall_s"), &p->wall_s) && get_pair(tv_json_get(doc, "sample_res"), p->res) &&
            get_pair(tv_json_get(doc, "pvs_res"), p->pvs_res) && get_int(tv_json_get(doc, "samples"), &p->samples) &&
-           get_double(tv_json_get(doc, "fov_deg"), &fov) && get_double(tv_json_get(doc, "fov_pvs_deg"), &fov_pvs) &&
-           ((p->fov = (float)fov), (p->fov_pvs = (float)fov_pvs), true);
+           get_double(tv_json_get(doc, "fov_deg"), &fov) && get_double(tv_json_get(doc, "fov_pvs_deg"), &fov_pvs);
+    p->fov = ok ? (float)fov : 0.0f;
+    p->fov_pvs = ok ? (float)fov_pvs : 0.0f;
+    return ok;
 }
 
 static bool same_fields(const tv_json* names)
