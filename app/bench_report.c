@@ -189,7 +189,7 @@ static void md_tables(FILE* f, const tv_bench_row* rows, int first, int end)
                 pvs_method_name(r->method), 100.0 * r->delta, 100.0 * m->pvs_fraction, 100.0 * m->gt_fraction,
                 plus_minus(ratio_ci, sizeof ratio_ci, ratio(m->pvs_fraction, m->gt_fraction), r->pvs_over_gt_ci95, 2),
                 m->gt_completeness, ratio(m->pvs_tris, m->gt_est_tris), m->fp_rate, m->fn_rate, m->fp_rate_reliable,
-                m->fn_rate_reliable, plus_minus(fng_ci, sizeof fng_ci, m->fng_pixels_mean, r->fng_ci95, 1),
+                m->fn_rate_reliable, plus_minus(fng_ci, sizeof fng_ci, m->fng_pixels_mean, r->fng_ci95, 2),
                 100.0 * m->fng_fraction_mean, m->psnr_mean_db, m->psnr_min_db, m->ssim_mean, m->ssim_min,
                 r->mean.pvs_ms, m->gt_ms, r->full_pvsres_ms, ratio(r->mean.pvs_ms, r->full_pvsres_ms),
                 ratio(r->mean.pvs_ms, m->gt_ms));
