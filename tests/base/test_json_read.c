@@ -1,4 +1,4 @@
-/* Unit tests of app/json_read (the bench part-file reader): a document
+/* Unit tests of base/json_read (the bench part-file reader): a document
  * reads back with exact numbers and decoded strings; every malformed input
  * is refused with a message naming the file and the byte. */
 #include "json_read.h"

@@ -1,10 +1,10 @@
-/* json_read.h - a small JSON reader for files trimvr writes itself (bench
- * part files): parses a whole document into a tree. Numbers are doubles
+/* json_read.h - a small JSON reader: parses a whole document into a tree
+ * (bench part files; in base/ so any module may read JSON with it). Numbers are doubles
  * (strtod, so a value written with %.17g reads back bit-exact); strings are
  * UTF-8 with the standard escapes (\uXXXX above ASCII becomes '?'). Nesting
  * is limited to 64 levels. Vulkan-free. */
-#ifndef TRIMVR_APP_JSON_READ_H
-#define TRIMVR_APP_JSON_READ_H
+#ifndef TRIMVR_BASE_JSON_READ_H
+#define TRIMVR_BASE_JSON_READ_H
 
 #include <stdbool.h>
 #include <stddef.h>
