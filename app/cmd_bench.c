@@ -222,7 +222,7 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
         for (int i = lo; ok && i < hi; i++, done++) {
             tv_bench_cell c = {.row = row, .index = i, .method = kind, .delta = b->deltas[d]};
             snprintf(c.scene, sizeof c.scene, "%s", spec);
-            ok = tv_eval_cell_run(m, s, &ed, o->fov, &cells[i], mask, gt, err, sizeof err);
+            ok = tv_eval_cell_run(m, s->ctx, &s->scene, s->gpu, &ed, o->fov, &cells[i], mask, gt, err, sizeof err);
             if (ok) {
                 c.c = cells[i];
                 full_render_ms(o, s, target, &cells[i], c.full_ms);
