@@ -9,6 +9,7 @@
 #include "replay_log.h"
 #include "replay_plots.h"
 #include "log.h"
+#include "ssim.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -25,6 +26,7 @@ typedef struct replay_state {
     tv_replay_log* log;
     rnd_target* target;
     uint8_t *rgba_full, *rgba_pvs;
+    double* ssim_scratch;
     uint32_t* ids_full;
     tv_worst_frame worst;
     pred_pose sample;
@@ -98,6 +100,7 @@ static bool evaluate_eye(replay_state* st, uint64_t frame, double t_frame, doubl
          * the wall clock would include waiting behind the PVS worker's work */
         .render_pvs_ms = pvs_st.gpu_ms >= 0.0 ? pvs_st.gpu_ms : pvs_st.cpu_ms,
         .render_full_ms = full_st.gpu_ms >= 0.0 ? full_st.gpu_ms : full_st.cpu_ms,
+        .ssim = rnd_ssim_rgb8(st->rgba_full, st->rgba_pvs, st->d->width, st->d->height, 4, st->ssim_scratch),
     };
     tv_worst_frame_offer(&st->worst, row.psnr_db, frame, e, st->rgba_full, st->rgba_pvs, st->ids_full, cur->mask,
                          st->s.scene.triangle_count);
@@ -177,7 +180,8 @@ static bool setup(replay_state* st, char* err, size_t err_size)
     st->rgba_full = malloc(pixels * 4);
     st->rgba_pvs = malloc(pixels * 4);
     st->ids_full = malloc(pixels * sizeof(uint32_t));
-    if (!st->target || !st->rgba_full || !st->rgba_pvs || !st->ids_full ||
+    st->ssim_scratch = malloc(rnd_ssim_scratch_count(d->width, d->height) * sizeof(double));
+    if (!st->target || !st->rgba_full || !st->rgba_pvs || !st->ids_full || !st->ssim_scratch ||
         !tv_worst_frame_init(&st->worst, d->width, d->height)) {
         if (!err[0])
             snprintf(err, err_size, "out of memory");
@@ -208,6 +212,7 @@ static void teardown(replay_state* st)
     free(st->rgba_full);
     free(st->rgba_pvs);
     free(st->ids_full);
+    free(st->ssim_scratch);
     tv_worst_frame_free(&st->worst);
 }
 

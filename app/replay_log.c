@@ -30,7 +30,7 @@ static bool series_push(series* s, double x)
 struct tv_replay_log {
     FILE* csv;
     char csv_name[4200];
-    series psnr, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
+    series psnr, ssim, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
     uint64_t rows, misses, identical;
     double sum_mse;
     uint64_t frames_missed_last; /* frame number of the last miss, to count frames not rows */
@@ -41,7 +41,7 @@ static const char* k_header =
     "frame,t,eye,px,py,pz,qx,qy,qz,qw,pose_age_ms,"
     "pred_px,pred_py,pred_pz,pred_qx,pred_qy,pred_qz,pred_qw,pred_err_pos_m,pred_err_rot_deg,pred_horizon_ms,"
     "delta_m,fov_pvs_deg,pvs_id,pvs_age_ms,inside_viewcell,miss_reason,pvs_tris,pvs_fraction,"
-    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms\n";
+    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,ssim\n";
 
 tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size)
 {
@@ -70,13 +70,14 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
                     "%llu,%.6f,%s,%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.3f,"
                     "%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.6f,%.4f,%.3f,"
                     "%.4f,%.3f,%u,%.3f,%d,%s,%u,%.6f,"
-                    "%.3f,%llu,%llu,%.3f,%.3f,%.3f\n",
+                    "%.3f,%llu,%llu,%.3f,%.3f,%.3f,%.6f\n",
                     (unsigned long long)r->frame, r->t, r->eye == 0 ? "left" : "right", p->p[0], p->p[1], p->p[2],
                     p->q[0], p->q[1], p->q[2], p->q[3], r->pose_age_ms, q->p[0], q->p[1], q->p[2], q->q[0], q->q[1],
                     q->q[2], q->q[3], r->pred_err_pos_m, r->pred_err_rot_deg, r->pred_horizon_ms, r->delta_m,
                     r->fov_pvs_deg, r->pvs_id, r->pvs_age_ms, r->inside ? 1 : 0, r->miss_reason, r->pvs_tris,
                     r->pvs_fraction, isinf(r->psnr_db) ? INFINITY : r->psnr_db, (unsigned long long)r->fn_pixels,
-                    (unsigned long long)r->diff_pixels, r->pvs_compute_ms, r->render_pvs_ms, r->render_full_ms);
+                    (unsigned long long)r->diff_pixels, r->pvs_compute_ms, r->render_pvs_ms, r->render_full_ms,
+                    r->ssim);
     /* flushing every row is what lets an interrupted replay keep its log */
     if (n < 0 || fflush(log->csv) != 0)
         return false;
@@ -90,6 +91,8 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
         log->any_miss = true;
         log->frames_missed_last = r->frame;
     }
+    if (!isnan(r->ssim) && !series_push(&log->ssim, r->ssim))
+        return false;
     return series_push(&log->psnr, r->psnr_db) && series_push(&log->fn, (double)r->fn_pixels) &&
            series_push(&log->pvs_fraction, r->pvs_fraction) && series_push(&log->delta, r->delta_m) &&
            series_push(&log->fov, r->fov_pvs_deg) && series_push(&log->render_full, r->render_full_ms) &&
@@ -111,9 +114,9 @@ double tv_replay_log_worst_psnr(const tv_replay_log* log)
 
 static void free_series(tv_replay_log* log)
 {
-    series* all[] = {&log->psnr,        &log->fn,         &log->pvs_fraction, &log->delta,
-                     &log->fov,         &log->render_full, &log->render_pvs,  &log->pvs_ms,
-                     &log->pred_pos,    &log->pred_rot,   &log->pose_age};
+    series* all[] = {&log->psnr,       &log->ssim,        &log->fn,         &log->pvs_fraction,
+                     &log->delta,      &log->fov,         &log->render_full, &log->render_pvs,
+                     &log->pvs_ms,     &log->pred_pos,    &log->pred_rot,   &log->pose_age};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
         free(all[i]->v);
 }
@@ -122,7 +125,7 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
                           size_t err_size)
 {
     struct {
-        double psnr_mean, psnr_min, psnr_p5, fn_mean, fn_max, pvs_fraction, delta, fov, pvs_ms, pvs_ms_median,
+        double psnr_mean, psnr_min, psnr_p5, ssim_mean, ssim_p5, fn_mean, fn_max, pvs_fraction, delta, fov, pvs_ms, pvs_ms_median,
             full_ms, pvs_render_ms, pred_pos_p99, pred_rot_p99, pose_age;
     } sm = {
         /* PSNR of the mean squared error: identical frames (PSNR +inf) count as zero error */
@@ -131,6 +134,8 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
                                           : INFINITY,
         .psnr_min = tv_percentile(log->psnr.v, log->psnr.n, 0.0),
         .psnr_p5 = tv_percentile(log->psnr.v, log->psnr.n, 5.0),
+        .ssim_mean = tv_mean(log->ssim.v, log->ssim.n),
+        .ssim_p5 = tv_percentile(log->ssim.v, log->ssim.n, 5.0),
         .fn_mean = tv_mean(log->fn.v, log->fn.n),
         .fn_max = tv_percentile(log->fn.v, log->fn.n, 100.0),
         .pvs_fraction = tv_mean(log->pvs_fraction.v, log->pvs_fraction.n),
@@ -167,7 +172,8 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
             double v;
         } nums[] = {
             {"psnr_mean_db", sm.psnr_mean},          {"psnr_min_db", sm.psnr_min},
-            {"psnr_p5_db", sm.psnr_p5},              {"fn_pixels_mean", sm.fn_mean},
+            {"psnr_p5_db", sm.psnr_p5},              {"ssim_mean", sm.ssim_mean},
+            {"ssim_p5", sm.ssim_p5},                 {"fn_pixels_mean", sm.fn_mean},
             {"fn_pixels_max", sm.fn_max},            {"pvs_fraction_mean", sm.pvs_fraction},
             {"delta_mean_m", sm.delta},              {"fov_pvs_mean_deg", sm.fov},
             {"pvs_ms_mean", sm.pvs_ms},              {"pvs_ms_median", sm.pvs_ms_median},
@@ -194,6 +200,7 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
                 (unsigned long long)log->rows, (unsigned long long)m->display_frames,
                 (unsigned long long)log->identical);
         fprintf(table, " PSNR mean / p5 / min  %8.2f / %.2f / %.2f dB\n", sm.psnr_mean, sm.psnr_p5, sm.psnr_min);
+        fprintf(table, " SSIM mean / p5        %8.4f / %.4f\n", sm.ssim_mean, sm.ssim_p5);
         fprintf(table, " FN pixels mean / max  %8.2f / %.0f\n", sm.fn_mean, sm.fn_max);
         fprintf(table, " viewcell misses       %8llu frames\n", (unsigned long long)log->misses);
         fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);

@@ -32,6 +32,7 @@ typedef struct tv_frame_row {
     uint64_t diff_pixels;    /* pixels whose colour differs at all */
     double pvs_compute_ms;   /* wall clock of the PVS on the worker */
     double render_pvs_ms, render_full_ms;
+    double ssim;             /* mean SSIM, PVS render against full render (eval/ssim.h); NaN: image under 11 px */
 } tv_frame_row;
 
 typedef struct tv_replay_log tv_replay_log;

@@ -18,7 +18,8 @@ static const char* const k_cols[] = {
     "full_render_ms", "full_render_pvsres_ms", "pvs_over_full", "pvs_over_gt_ms", "p0_ms", "p1_ms", "p2_ms",
     "p3_ms", "p4_ms", "layers", "active_pixels", "mean_trim_sequence", "kbuffer_alloc_bytes",
     "kbuffer_used_bytes", "overflow_pixels", "views", "fng_fraction_worst_cell", "psnr_worst_cell_db",
-    "gt_completeness", "gt_est_tris", "pvs_over_gt_est_tris"};
+    "gt_completeness", "gt_est_tris", "pvs_over_gt_est_tris", "ssim_mean", "ssim_min",
+    "fng_pixels_ci95", "pvs_over_gt_ci95", "worst_cell", "fng_pixels_worst_cell"};
 enum { COL_COUNT = (int)(sizeof k_cols / sizeof k_cols[0]) };
 
 static double ratio(double a, double b)
@@ -38,7 +39,8 @@ static void row_values(const tv_bench_row* r, double* v)
         ratio(r->mean.pvs_ms, r->full_pvsres_ms), ratio(r->mean.pvs_ms, m->gt_ms), tr->ms[0], tr->ms[1], tr->ms[2],
         tr->ms[3], tr->ms[4], tr->layers, (double)tr->active_pixels, tr->mean_sequence, (double)tr->kbuffer_bytes,
         (double)tr->kbuffer_bytes_used, (double)tr->overflow_pixels, r->views, r->fng_fraction_worst_cell,
-        r->psnr_worst_cell_db, m->gt_completeness, m->gt_est_tris, ratio(m->pvs_tris, m->gt_est_tris)};
+        r->psnr_worst_cell_db, m->gt_completeness, m->gt_est_tris, ratio(m->pvs_tris, m->gt_est_tris), m->ssim_mean,
+        m->ssim_min, r->fng_ci95, r->pvs_over_gt_ci95, r->worst_index, r->worst.m.fng_pixels_mean};
     memcpy(v, x, sizeof x);
 }
 
@@ -99,7 +101,12 @@ static bool write_json(const char* dir, const tv_bench_info* in, const tv_bench_
     fprintf(f, "{\n  \"command\": \"");
     for (const char* c = in->command_line; *c; c++)
         fprintf(f, *c == '"' || *c == '\\' ? "\\%c" : "%c", *c);
-    fprintf(f, "\",\n  \"date\": \"%s\", \"device\": \"%s\", \"wall_s\": %.1f,\n", in->date, in->device, in->wall_s);
+    fprintf(f, "\",\n  \"date\": \"%s\", \"device\": \"%s\", \"version\": \"%s\", \"wall_s\": %.1f,\n", in->date,
+            in->device, in->version, in->wall_s);
+    if (in->merged)
+        fprintf(f, "  \"merged\": \"%s\",\n", in->merged);
+    fprintf(f, "  \"ci\": \"95 %% t-intervals over viewcells: fng_pixels_ci95 of the mean, pvs_over_gt_ci95 of the "
+               "ratio of means by linearisation\",\n");
     fprintf(f, "  \"sample_res\": [%u, %u], \"pvs_res\": [%u, %u], \"samples\": %d, \"fov_deg\": %.2f, "
                "\"fov_pvs_deg\": %.2f,\n  \"rows\": [\n",
             in->res[0], in->res[1], in->pvs_res[0], in->pvs_res[1], in->samples, in->fov, in->fov_pvs);
@@ -112,7 +119,11 @@ static bool write_json(const char* dir, const tv_bench_info* in, const tv_bench_
         tv_json_num(f, "pvs_over_gt_ms", ratio(r->mean.pvs_ms, r->mean.m.gt_ms), ", ");
         tv_json_num(f, "pvs_over_gt_tris", ratio(r->mean.m.pvs_fraction, r->mean.m.gt_fraction), ", ");
         tv_json_num(f, "fng_fraction_worst_cell", r->fng_fraction_worst_cell, ", ");
-        tv_json_num(f, "psnr_worst_cell_db", r->psnr_worst_cell_db, ",\n");
+        tv_json_num(f, "psnr_worst_cell_db", r->psnr_worst_cell_db, ",\n     ");
+        tv_json_num(f, "fng_pixels_ci95", r->fng_ci95, ", ");
+        tv_json_num(f, "pvs_over_gt_ci95", r->pvs_over_gt_ci95, ", ");
+        fprintf(f, "\"worst_cell\": %d, ", r->worst_index);
+        tv_json_num(f, "fng_pixels_worst_cell", r->worst.m.fng_pixels_mean, ",\n");
         tv_eval_json_metrics(f, &r->mean, "     ");
         fprintf(f, "}%s\n", i + 1 < n ? "," : "");
     }
@@ -120,29 +131,71 @@ static bool write_json(const char* dir, const tv_bench_info* in, const tv_bench_
     return close_out(f, path, err, err_size);
 }
 
+/* "v ± ci" with `digits` decimals; just v when there is no interval (one viewcell). */
+static const char* plus_minus(char* buf, size_t size, double v, double ci, int digits)
+{
+    if (isfinite(ci))
+        snprintf(buf, size, "%.*f ± %.*f", digits, v, digits, ci);
+    else
+        snprintf(buf, size, "%.*f", digits, v);
+    return buf;
+}
+
+/* Per method, the viewcell with the most FN pixels over every Δ (ties: the
+ * lower PSNR), where to find it, and what it scored. */
+static void md_worst_cells(FILE* f, const tv_bench_row* rows, int first, int end)
+{
+    fprintf(f, "\nWorst viewcell per method (most FN pixels per view over all Δ):\n\n"
+               "| method | Δ cm | cell | centre | looking | FNG px | FNG %% | PSNR dB | SSIM |\n"
+               "|---|---:|---:|---|---|---:|---:|---:|---:|\n");
+    bool done[PVS_METHOD_COUNT] = {false};
+    for (int i = first; i < end; i++) {
+        if (done[rows[i].method])
+            continue;
+        done[rows[i].method] = true;
+        const tv_bench_row* w = &rows[i];
+        for (int j = i + 1; j < end; j++) {
+            const pvs_eval_result *x = &rows[j].worst.m, *y = &w->worst.m;
+            if (rows[j].method == w->method &&
+                (x->fng_pixels_mean > y->fng_pixels_mean ||
+                 (x->fng_pixels_mean == y->fng_pixels_mean && x->psnr_mean_db < y->psnr_mean_db)))
+                w = &rows[j];
+        }
+        const tv_eval_cell* c = &w->worst;
+        fprintf(f, "| %s | %.0f | %d | %.2f,%.2f,%.2f | %.2f,%.2f,%.2f | %.1f | %.4f | %.1f | %.4f |\n",
+                pvs_method_name(w->method), 100.0 * w->delta, w->worst_index, c->vc.v0[0], c->vc.v0[1], c->vc.v0[2],
+                c->vc.forward[0], c->vc.forward[1], c->vc.forward[2], c->m.fng_pixels_mean,
+                100.0 * c->m.fng_fraction_mean, c->m.psnr_mean_db, c->m.ssim_mean);
+    }
+}
+
 static void md_tables(FILE* f, const tv_bench_row* rows, int first, int end)
 {
     fprintf(f, "\n### %s (%u triangles, %d viewcells)\n\n", rows[first].scene, rows[first].mean.m.scene_tris,
             rows[first].cells);
-    fprintf(f, "| method | Δ cm | PVS %% | GT %% | PVS/GT | GT compl. | PVS/GT est | FP | FN | FP* | FN* | FNG px | "
-               "FNG %% | PSNR dB | PSNR min | PVS ms | GT ms | full ms | PVS/full | PVS/GT ms |\n");
+    fprintf(f, "| method | Δ cm | PVS %% | GT %% | PVS/GT ± 95%% | GT compl. | PVS/GT est | FP | FN | FP* | FN* | "
+               "FNG px ± 95%% | FNG %% | PSNR dB | PSNR min | SSIM | SSIM min | PVS ms | GT ms | full ms | PVS/full | "
+               "PVS/GT ms |\n");
     fprintf(f, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:"
-               "|---:|\n");
+               "|---:|---:|---:|\n");
     bool any_tr = false;
     for (int i = first; i < end; i++) {
         const tv_bench_row* r = &rows[i];
         const pvs_eval_result* m = &r->mean.m;
+        char ratio_ci[64], fng_ci[64];
         any_tr = any_tr || r->method == PVS_METHOD_TR;
         fprintf(f,
-                "| %s | %.0f | %.2f | %.2f | %.2f | %.2f | %.2f | %.3f | %.4f | %.3f | %.4f | %.1f | %.4f | %.1f | "
-                "%.1f | %.0f | %.0f | %.1f | %.1f | %.2f |\n",
+                "| %s | %.0f | %.2f | %.2f | %s | %.2f | %.2f | %.3f | %.4f | %.3f | %.4f | %s | %.4f | %.1f | "
+                "%.1f | %.4f | %.4f | %.0f | %.0f | %.1f | %.1f | %.2f |\n",
                 pvs_method_name(r->method), 100.0 * r->delta, 100.0 * m->pvs_fraction, 100.0 * m->gt_fraction,
-                ratio(m->pvs_fraction, m->gt_fraction), m->gt_completeness, ratio(m->pvs_tris, m->gt_est_tris),
-                m->fp_rate, m->fn_rate, m->fp_rate_reliable,
-                m->fn_rate_reliable, m->fng_pixels_mean, 100.0 * m->fng_fraction_mean, m->psnr_mean_db,
-                m->psnr_min_db, r->mean.pvs_ms, m->gt_ms, r->full_pvsres_ms, ratio(r->mean.pvs_ms, r->full_pvsres_ms),
+                plus_minus(ratio_ci, sizeof ratio_ci, ratio(m->pvs_fraction, m->gt_fraction), r->pvs_over_gt_ci95, 2),
+                m->gt_completeness, ratio(m->pvs_tris, m->gt_est_tris), m->fp_rate, m->fn_rate, m->fp_rate_reliable,
+                m->fn_rate_reliable, plus_minus(fng_ci, sizeof fng_ci, m->fng_pixels_mean, r->fng_ci95, 2),
+                100.0 * m->fng_fraction_mean, m->psnr_mean_db, m->psnr_min_db, m->ssim_mean, m->ssim_min,
+                r->mean.pvs_ms, m->gt_ms, r->full_pvsres_ms, ratio(r->mean.pvs_ms, r->full_pvsres_ms),
                 ratio(r->mean.pvs_ms, m->gt_ms));
     }
+    md_worst_cells(f, rows, first, end);
     if (!any_tr)
         return;
     fprintf(f, "\ntr per phase (ms, means over viewcells), layers, resolves and k-buffers:\n\n"
@@ -166,15 +219,19 @@ static bool write_md(const char* dir, const tv_bench_info* in, const tv_bench_ro
     FILE* f = open_out(dir, "bench.md", path, sizeof path, err, err_size);
     if (!f)
         return false;
-    fprintf(f, "# trimvr bench\n\n```\n%s\n```\n\n%s on %s, %.0f s. Ground truth: %d views per viewcell at %ux%u "
+    fprintf(f, "# trimvr bench\n\n```\n%s\n```\n\n%s", in->command_line, in->merged ? in->merged : "one run");
+    fprintf(f, ", trimvr %s, %s on %s, %.0f s. Ground truth: %d views per viewcell at %ux%u "
                "(eye FOV %.0f°); PVS resolution %ux%u, PVS FOV %.0f°.\n",
-            in->command_line, in->date, in->device, in->wall_s, in->samples, in->res[0], in->res[1], in->fov,
+            in->version, in->date, in->device, in->wall_s, in->samples, in->res[0], in->res[1], in->fov,
             in->pvs_res[0], in->pvs_res[1], in->fov_pvs);
     fprintf(f, "\nColumns: PVS/GT = PVS size over ground-truth size; GT compl. = GT size over its Chao2 estimate "
                "from the triangles seen in one and in two views (how complete the sampled GT is), PVS/GT est = "
                "PVS size over that estimate; FP, FN = false-positive and false-negative "
                "rates over the GT size, * without unreliable triangles; FNG = false-negative pixels per GT view "
-               "(mean); PSNR of PVS renders against full renders (mean of MSE, and worst view); PVS ms = wall "
+               "(mean); ± 95 %% = half-width of the 95 %% t-interval over the viewcells (FNG: of the mean; "
+               "PVS/GT: of the ratio of means, by linearisation; docs/bench.md); PSNR of PVS renders against full "
+               "renders (mean of MSE, and worst view); SSIM likewise (mean over views and worst view; Wang et al. "
+               "2004 on Rec. 601 luma, docs/evaluation.md); PVS ms = wall "
                "clock of one PVS; GT ms = the id renders of the ground truth; full ms = one full-scene draw at "
                "the PVS resolution and FOV; the ratios are of those times, measured in the same run.\n");
     for (int first = 0; first < n;) {

@@ -17,6 +17,8 @@ int tv_eval_path_cells(const char* file, int every, int max_cells, float delta, 
     if (!scene_spec[0])
         snprintf(scene_spec, spec_size, "%s", path.scene);
     int frames = (int)(pred_path_duration(&path) * 90.0) + 1;
+    if (every <= 0) /* max_cells spread evenly along the path */
+        every = max_cells > 0 && frames > max_cells ? frames / max_cells : 1;
     int n = (frames + every - 1) / every;
     if (max_cells > 0 && n > max_cells)
         n = max_cells;
@@ -222,6 +224,7 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
     pvs_stats* tr = &r.st.tr;
     double mse = 0.0;
     m->psnr_min_db = INFINITY;
+    m->ssim_min = INFINITY;
     for (int i = 0; i < n; i++) {
         const pvs_eval_result* x = &c[i].m;
         const pvs_stats* xt = &c[i].st.tr;
@@ -246,6 +249,8 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
         if (isfinite(x->psnr_mean_db))
             mse += 255.0 * 255.0 / pow(10.0, x->psnr_mean_db / 10.0) / n;
         m->psnr_min_db = fmin(m->psnr_min_db, x->psnr_min_db);
+        m->ssim_mean += x->ssim_mean / n;
+        m->ssim_min = fmin(m->ssim_min, x->ssim_min);
         m->gt_ms += x->gt_ms / n;
         m->full_render_ms += x->full_render_ms / n;
         m->pvs_render_ms += x->pvs_render_ms / n;
@@ -296,7 +301,9 @@ void tv_eval_json_metrics(FILE* f, const tv_eval_cell* c, const char* indent)
     tv_json_num(f, "fng_reliable_pixels_mean", m->fng_reliable_pixels_mean, ",\n");
     fprintf(f, "%s", indent);
     tv_json_num(f, "psnr_mean_db", m->psnr_mean_db, ", ");
-    tv_json_num(f, "psnr_min_db", m->psnr_min_db, ",\n");
+    tv_json_num(f, "psnr_min_db", m->psnr_min_db, ", ");
+    tv_json_num(f, "ssim_mean", m->ssim_mean, ", ");
+    tv_json_num(f, "ssim_min", m->ssim_min, ",\n");
     fprintf(f, "%s", indent);
     tv_json_num(f, "pvs_ms", c->pvs_ms, ", ");
     tv_json_num(f, "gt_ms", m->gt_ms, ", ");

@@ -2,6 +2,7 @@
 
 #include "clock.h"
 #include "image_compare.h"
+#include "ssim.h"
 #include "stats.h"
 
 #include <assert.h>
@@ -182,6 +183,7 @@ typedef struct eval_buffers {
     rnd_camera* cams;
     double* full_ms;
     double* pvs_ms;
+    double* ssim_scratch;
 } eval_buffers;
 
 static void free_buffers(eval_buffers* b)
@@ -195,6 +197,7 @@ static void free_buffers(eval_buffers* b)
     free(b->cams);
     free(b->full_ms);
     free(b->pvs_ms);
+    free(b->ssim_scratch);
 }
 
 static void set_metrics(const scn_scene* scene, const uint8_t* pvs_mask, const uint8_t* gt,
@@ -256,12 +259,13 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
         .cams = malloc(d.samples * sizeof(rnd_camera)),
         .full_ms = malloc(d.samples * sizeof(double)),
         .pvs_ms = malloc(d.samples * sizeof(double)),
+        .ssim_scratch = malloc(rnd_ssim_scratch_count(d.width, d.height) * sizeof(double)),
     };
     uint8_t* gt = gt_mask ? gt_mask : calloc(scene->triangle_count ? scene->triangle_count : 1, 1);
     rnd_target* target = NULL;
     bool ok = false;
     if (!b.ids || !b.last_view || !b.views || !b.full_rgba || !b.pvs_rgba || !b.unreliable || !b.cams ||
-        !b.full_ms || !b.pvs_ms || !gt) {
+        !b.full_ms || !b.pvs_ms || !b.ssim_scratch || !gt) {
         snprintf(err, err_size, "ground truth: out of memory");
         goto done;
     }
@@ -276,7 +280,7 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
                  vc->delta, vc->fov_pvs_deg);
         goto done;
     }
-    double sum_sq = 0.0, fn_sum = 0.0, fn_rel_sum = 0.0, gt_sum_ms = 0.0;
+    double sum_sq = 0.0, fn_sum = 0.0, fn_rel_sum = 0.0, gt_sum_ms = 0.0, ssim_sum = 0.0;
     out->psnr_min_db = INFINITY;
     for (uint32_t s = 0; s < n; s++) {
         rnd_draw_stats full_st, pvs_st;
@@ -318,6 +322,9 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
         }
         if (isfinite(psnr)) /* back to the mean squared error the PSNR came from */
             sum_sq += 255.0 * 255.0 / pow(10.0, psnr / 10.0);
+        double ssim = rnd_ssim_rgb8(b.full_rgba, b.pvs_rgba, d.width, d.height, 4, b.ssim_scratch);
+        ssim_sum += ssim;
+        out->ssim_min = s == 0 ? ssim : fmin(out->ssim_min, ssim);
     }
     set_metrics(scene, pvs_mask, gt, &b, n, out);
     out->samples = n;
@@ -326,6 +333,7 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
     out->fng_fraction_mean = out->fng_pixels_mean / (double)pixels;
     double mse = sum_sq / n;
     out->psnr_mean_db = mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
+    out->ssim_mean = ssim_sum / n;
     out->full_render_ms = tv_percentile(b.full_ms, n, 50.0);
     out->pvs_render_ms = tv_percentile(b.pvs_ms, n, 50.0);
     out->gt_ms = gt_sum_ms;

@@ -64,6 +64,7 @@ typedef struct pvs_eval_result {
     double psnr_mean_db;          /* PSNR of the mean squared error over all views (+inf if none) */
     double psnr_min_db;           /* worst view */
     uint32_t worst_view;          /* index of the worst-PSNR sample */
+    double ssim_mean, ssim_min;   /* SSIM of PVS against full render (eval/ssim.h): mean over views, worst view */
     double gt_ms;                 /* ground-truth cost: the id renders and read-backs of all samples */
     double eval_ms;               /* wall clock of the whole evaluation (GT and PVS renders, metrics) */
     double full_render_ms;        /* median full-scene draw of one sample view */
