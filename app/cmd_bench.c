@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "app_scene.h"
 #include "args.h"
+#include "auto_place.h"
 #include "bench_report.h"
 #include "cli_viewcell.h"
 #include "clock.h"
@@ -52,47 +53,49 @@ typedef struct bench_run {
     double t0;
     char device[256];
     bool cells_printed; /* this scene's viewcells were listed */
+    char placed_spec[256]; /* the scene whose viewcells were placed automatically */
+    float placed_pos[3 * MAX_LIST], placed_dir[3 * MAX_LIST];
+    int nplaced;
 } bench_run;
 
 /* The viewcells of one scene at radius delta: --pos if given, else the
  * scene's bundled walk (builtin:NAME and sponza: paths/NAME-walk.csv), else
- * floor points of an OpenArena level. -1 with a message when it has none. */
-static int scene_cells(const bench_run* b, const char* spec, const tv_app_scene* s, float delta, tv_eval_cell** out)
+ * placed automatically (app/auto_place.h: q3 vis floor points of an
+ * OpenArena level, the walkable-floor rule elsewhere), once per scene. -1
+ * with a message when it has none. */
+static int scene_cells(bench_run* b, const char* spec, const tv_app_scene* s, float delta, tv_eval_cell** out)
 {
     const bench_opts* o = b->o;
-    char err[512];
-    if (b->npos > 0) {
-        *out = calloc((size_t)b->npos, sizeof **out);
-        for (int i = 0; *out && i < b->npos; i++) {
-            tv_viewcell_make(&b->pos[3 * i], o->dir, delta, o->fov, o->fov_pvs, &(*out)[i].vc);
-            for (int k = 0; k < 3; k++)
-                (*out)[i].motion[k] = 2.0 * delta * (*out)[i].vc.forward[k];
-        }
-        return *out ? b->npos : -1;
+    char err[512], walk[4300];
+    if (b->npos == 0 && tv_bundled_walk(spec, walk, sizeof walk)) {
+        char scene_spec[8] = "-"; /* non-empty: the path's own scene line is not wanted */
+        int n = tv_eval_path_cells(walk, o->every, o->max_cells, delta, o->fov, o->fov_pvs, out, scene_spec,
+                                   sizeof scene_spec, err, sizeof err);
+        if (n < 0)
+            fprintf(stderr, "trimvr bench: error: %s: %s\n", spec, err);
+        return n;
     }
-    if (strncmp(spec, "oa:", 3) == 0) {
-        char json[4200];
-        tv_eval_pvs_json_of(spec, json, sizeof json);
-        float pos[3 * MAX_LIST], dir[3 * MAX_LIST];
+    if (b->npos == 0 && strcmp(b->placed_spec, spec) != 0) {
         int want = o->max_cells > 0 && o->max_cells < MAX_LIST ? o->max_cells : MAX_LIST;
-        int n = tv_eval_floor_points(&s->scene, json, want, pos, dir, err, sizeof err);
-        *out = n > 0 ? calloc((size_t)n, sizeof **out) : NULL;
-        for (int i = 0; *out && i < n; i++) {
-            tv_viewcell_make(&pos[3 * i], &dir[3 * i], delta, o->fov, o->fov_pvs, &(*out)[i].vc);
-            for (int k = 0; k < 3; k++)
-                (*out)[i].motion[k] = 2.0 * delta * dir[3 * i + k];
-        }
-        if (n <= 0 || !*out)
-            fprintf(stderr, "trimvr bench: error: %s: %s\n", spec, n < 0 ? err : "no floor point found");
-        return n > 0 && *out ? n : -1;
+        const char* rule = "";
+        b->nplaced = tv_auto_viewcells(spec, &s->scene, want, b->placed_pos, b->placed_dir, &rule, err, sizeof err);
+        snprintf(b->placed_spec, sizeof b->placed_spec, "%s", spec);
+        if (b->nplaced < 0)
+            fprintf(stderr, "trimvr bench: error: %s: %s\n", spec, err);
+        else
+            fprintf(stderr, "bench %s: no bundled walk: %d viewcells placed by the %s rule (docs/scenes.md)\n", spec,
+                    b->nplaced, rule);
     }
-    char rel[256], buf[4300], scene_spec[8] = "-"; /* non-empty: the path's own scene line is not wanted */
-    snprintf(rel, sizeof rel, "paths/%s-walk.csv", strncmp(spec, "builtin:", 8) == 0 ? spec + 8 : spec);
-    int n = tv_eval_path_cells(tv_bundled_file(rel, buf, sizeof buf), o->every, o->max_cells, delta, o->fov,
-                               o->fov_pvs, out, scene_spec, sizeof scene_spec, err, sizeof err);
-    if (n < 0)
-        fprintf(stderr, "trimvr bench: error: %s: %s (no bundled walk: pass --pos)\n", spec, err);
-    return n;
+    int n = b->npos > 0 ? b->npos : b->nplaced;
+    const float* pos = b->npos > 0 ? b->pos : b->placed_pos;
+    *out = n > 0 ? calloc((size_t)n, sizeof **out) : NULL;
+    for (int i = 0; *out && i < n; i++) {
+        const float* dir = b->npos > 0 ? o->dir : &b->placed_dir[3 * i];
+        tv_viewcell_make(&pos[3 * i], dir, delta, o->fov, o->fov_pvs, &(*out)[i].vc);
+        for (int k = 0; k < 3; k++)
+            (*out)[i].motion[k] = 2.0 * delta * (*out)[i].vc.forward[k];
+    }
+    return *out ? n : -1;
 }
 
 /* Median wall clock of full-scene draws at the PVS resolution and FOV from
@@ -286,7 +289,8 @@ int tv_cmd_bench(int argc, char** argv)
         "Runs every PVS method on the same viewcells of each scene at each delta and measures it against sampled\n"
         "ground truth: PVS and GT size, FP/FN rates, false-negative pixels, PSNR, and PVS time beside the\n"
         "ground-truth time and a full-scene render at the PVS resolution, in the same run. Viewcells: the\n"
-        "scene's bundled walk (paths/NAME-walk.csv), floor points for OpenArena levels, or --pos. Writes\n"
+        "scene's bundled walk (paths/NAME-walk.csv), else placed automatically (floor points of OpenArena\n"
+        "levels, the walkable-floor rule of docs/scenes.md elsewhere), or --pos. Writes\n"
         "DIR/bench.md, bench.csv, bench.json and fig14-16 PNGs; progress on stderr. See docs/bench.md.";
     tv_args_result r = tv_args_parse("bench", summary, args, (int)(sizeof args / sizeof args[0]), argc, argv);
     if (r != TV_ARGS_OK)

@@ -3,6 +3,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "app_scene.h"
 #include "args.h"
+#include "auto_place.h"
 #include "commands.h"
 #include "replay.h"
 
@@ -23,7 +24,8 @@ int tv_cmd_replay(int argc, char** argv)
     bool noiseless = false, no_late_latch = false, no_plots = false, no_progress = false;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (default: the path's '# scene:' line)"},
-        {"path", TV_ARG_STRING, &path, "FILE", "head-motion path (default " DEFAULT_PATH ")"},
+        {"path", TV_ARG_STRING, &path, "FILE",
+         "head-motion path (default: with --scene its bundled walk or an automatic one, else " DEFAULT_PATH ")"},
         {"out", TV_ARG_STRING, &out, "DIR", "output folder (default out/replay)"},
         {"method", TV_ARG_STRING, &method, "M", "PVS method: tr, gt, sas, frompoint, q3vis (default tr)"},
         {"predictor", TV_ARG_STRING, &predictor, "P", "cv, ca or kalman (default cv)"},
@@ -64,7 +66,10 @@ int tv_cmd_replay(int argc, char** argv)
     memset(&d, 0, sizeof d);
     char path_buf[4300];
     d.scene = scene;
-    d.path = path ? path : tv_bundled_file(DEFAULT_PATH, path_buf, sizeof path_buf);
+    d.path = path ? path : scene ? tv_default_walk(scene, out, path_buf, sizeof path_buf)
+                                 : tv_bundled_file(DEFAULT_PATH, path_buf, sizeof path_buf);
+    if (!d.path)
+        return 1;
     d.out_dir = out;
     if (!pvs_method_from_name(method, &d.method.kind)) {
         fprintf(stderr, "trimvr replay: error: --method: unknown method '%s' (tr, gt, sas, frompoint, q3vis)\n", method);
