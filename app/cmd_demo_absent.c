@@ -1,0 +1,13 @@
+/* trimvr demo in the portable build (TRIMVR_PORTABLE): there is no window
+ * system in it, so the command only says so (docs/portable.md). */
+#include "commands.h"
+
+#include <stdio.h>
+
+int tv_cmd_demo(int argc, char** argv)
+{
+    (void)argc, (void)argv;
+    fprintf(stderr, "trimvr demo: error: not built in this build (TRIMVR_PORTABLE has no window; use a default "
+                    "build for the demo)\n");
+    return 1;
+}
