@@ -18,7 +18,11 @@ const char* tv_bundled_walk(const char* spec, char* buf, size_t size)
     char rel[256];
     snprintf(rel, sizeof rel, "paths/%s-walk.csv", strncmp(spec, "builtin:", 8) == 0 ? spec + 8 : spec);
     const char* file = tv_bundled_file(rel, buf, size);
-    return strchr(spec, '/') || access(file, R_OK) != 0 ? NULL : file;
+    if (strchr(spec, '/') || access(file, R_OK) != 0)
+        return NULL;
+    if (file == rel) /* found from the working folder: rel is ours, the caller gets buf */
+        snprintf(buf, size, "%s", rel);
+    return buf;
 }
 
 /* <name>.pvs.json beside the scene file when it exists. */
