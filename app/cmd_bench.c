@@ -83,7 +83,7 @@ static int scene_cells(bench_run* b, const char* spec, const tv_app_scene* s, fl
         if (b->nplaced < 0)
             fprintf(stderr, "trimvr bench: error: %s: %s\n", spec, err);
         else
-            fprintf(stderr, "bench %s: no bundled walk: %d viewcells placed by the %s rule (docs/scenes.md)\n", spec,
+            fprintf(stderr, "bench %s: no bundled walk: %d viewcells placed by the %s rule (docs/bench.md)\n", spec,
                     b->nplaced, rule);
     }
     int n = b->npos > 0 ? b->npos : b->nplaced;
