@@ -454,12 +454,6 @@ static float cast(const tv_walkable* w, const float eye[3], const float dir[3], 
     return best;
 }
 
-float tv_walkable_ray(const tv_walkable* w, const float eye[3], const float dir[3], float max_m)
-{
-    uint32_t hit;
-    return cast(w, eye, dir, max_m, &hit);
-}
-
 /* Inside a solid: of 8 horizontal rays from p that meet a single-sided
  * triangle, more meet its back than its front. */
 static bool inside_solid(const tv_walkable* w, const float p[3])
@@ -521,7 +515,8 @@ int tv_walkable_viewcells(const tv_walkable* w, uint32_t region, int max, float*
             float far = -1.0f;
             for (int k = 0; k < 16; k++) { /* the longest line of sight */
                 float a = (float)k * 3.14159265f / 8.0f, d[3] = {-sinf(a), 0.0f, -cosf(a)};
-                float len = tv_walkable_ray(w, eye, d, 50.0f);
+                uint32_t hit;
+                float len = cast(w, eye, d, 50.0f, &hit);
                 if (len > far + 1e-3f) {
                     far = len;
                     memcpy(&dir[3 * count], d, sizeof d);
@@ -598,19 +593,5 @@ int tv_walkable_route(const tv_walkable* w, uint32_t from, uint32_t to, uint32_t
         }
         route[k] = lo;
     }
-    return n;
-}
-
-int tv_walkable_auto_viewcells(const scn_scene* scene, int max, float* pos, float* dir, char* err, size_t err_size)
-{
-    tv_walkable* w = tv_walkable_create(scene, NULL, err, err_size);
-    if (!w)
-        return -1;
-    int n = tv_walkable_viewcells(w, UINT32_MAX, max, pos, dir, NULL);
-    if (n == 0)
-        snprintf(err, err_size, "%s: no walkable point (upward floor with %.1f m headroom and %.2f m clearance "
-                 "around a %.1f m eye)", scene->name, w->d.eye_height_m + w->d.clearance_m, w->d.clearance_m,
-                 w->d.eye_height_m);
-    tv_walkable_destroy(w);
     return n;
 }

@@ -87,16 +87,6 @@ bool tv_walkable_segment(const tv_walkable* w, const float a[3], const float b[3
  * Returns the count, 0 when unreachable or longer than max. */
 int tv_walkable_route(const tv_walkable* w, uint32_t from, uint32_t to, uint32_t* route, int max);
 
-/* Distance along the horizontal ray from `eye` in unit direction dir to the
- * first triangle, capped at max_m. */
-float tv_walkable_ray(const tv_walkable* w, const float eye[3], const float dir[3], float max_m);
-
-/* Creates, samples up to max viewcells over every walkable point (rule 4)
- * and destroys: what trimvr bench and trimvr info --floor-points use for a
- * scene without a bundled walk. Returns the count, 0 with a one-line reason
- * in err when the scene has no walkable point, -1 on out of memory. */
-int tv_walkable_auto_viewcells(const scn_scene* scene, int max, float* pos, float* dir, char* err, size_t err_size);
-
 /* Head clearance at p (capped at the clearance radius). */
 float tv_walkable_clearance(const tv_walkable* w, const float p[3]);
 
