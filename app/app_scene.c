@@ -76,6 +76,14 @@ bool tv_resolve_scene_spec(const char* spec, char* out, size_t out_size)
     return n >= 0 && (size_t)n < out_size;
 }
 
+void tv_eval_pvs_json_of(const char* spec, char* buf, size_t size)
+{
+    tv_resolve_scene_spec(spec, buf, size - 16);
+    char* dot = strrchr(buf, '.');
+    if (dot)
+        strcpy(dot, ".pvs.json");
+}
+
 bool tv_app_scene_open(const char* command, const char* spec, tv_app_scene* out)
 {
     return tv_app_scene_open_desc(command, spec, NULL, out);

@@ -25,6 +25,9 @@ typedef struct tv_app_scene {
  * Anything else is copied unchanged. Returns false if the result does not fit. */
 bool tv_resolve_scene_spec(const char* spec, char* out, size_t out_size);
 
+/* <level>.pvs.json next to an OpenArena level's .gltf, from a scene spec. */
+void tv_eval_pvs_json_of(const char* spec, char* buf, size_t size);
+
 /* Finds the bundled file `rel` (such as "paths/city-walk.csv") from the
  * repository root (the README's commands run there) or next to the
  * executable (build/trimvr -> ../rel). Returns rel itself when neither has

@@ -168,7 +168,7 @@ static bool bench_method(bench_run* b, const char* spec, const tv_app_scene* s, 
             warm = true;
         }
         for (int i = 0; ok && i < n; i++)
-            ok = tv_eval_cell_run(m, s, &ed, o->fov, &cells[i], mask, gt, err, sizeof err);
+            ok = tv_eval_cell_run(m, s->ctx, &s->scene, s->gpu, &ed, o->fov, &cells[i], mask, gt, err, sizeof err);
         if (!ok && n > 0)
             fprintf(stderr, "trimvr bench: error: %s, %s, delta %.2f: %s\n", spec, pvs_method_name(kind),
                     b->deltas[d], err);

@@ -35,7 +35,7 @@ int tv_cmd_demo(int argc, char** argv)
         {"view", TV_ARG_STRING, &view, "V", "initial view: pvs, full or fn (default pvs)"},
         {"overview", TV_ARG_FLAG, &overview, NULL, "start with the Figure 1 overview in the right half (O toggles it)"},
         {"every", TV_ARG_INT, &every, "N", "render the full scene too and compare every Nth frame (default 30)"},
-        {"start", TV_ARG_STRING, &start_text, "X,Y,Z", "without --path: start position (default: scene centre, 1.7 m up)"},
+        {"start", TV_ARG_STRING, &start_text, "X,Y,Z", "without --path: start position (default: where paths/NAME-walk.csv starts)"},
         {"yaw", TV_ARG_FLOAT, &yaw, "DEG", "without --path: start heading, 0 looks down -Z (default 0)"},
         {"mailbox", TV_ARG_FLAG, &mailbox, NULL, "MAILBOX presentation (no vsync wait) when offered; default FIFO"},
         {"no-hud", TV_ARG_FLAG, &no_hud, NULL, "start with the HUD hidden (U toggles it)"},

@@ -143,7 +143,7 @@ int tv_cmd_eval(int argc, char** argv)
         status = 1;
     }
     for (int i = 0; i < n && status == 0; i++) {
-        if (!tv_eval_cell_run(m, &s, &ed, o.fov, &cells[i], mask, gt, err, sizeof err)) {
+        if (!tv_eval_cell_run(m, s.ctx, &s.scene, s.gpu, &ed, o.fov, &cells[i], mask, gt, err, sizeof err)) {
             fprintf(stderr, "trimvr eval: error: viewcell %d: %s\n", i, err);
             status = 1;
         } else if (!tv_eval_images_keep_worst(&worst, &cells[i].vc, &cells[i].m, mask, gt, tris)) {

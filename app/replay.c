@@ -3,7 +3,7 @@
 
 #include "app_scene.h"
 #include "clock.h"
-#include "error_tracker.h"
+#include "pvs_pipeline.h"
 #include "fs.h"
 #include "image_compare.h"
 #include "replay_log.h"
@@ -15,87 +15,29 @@
 #include <string.h>
 #include <unistd.h>
 
-/* The worker's compute: one PVS method call. */
-static bool compute_pvs(void* user, const pred_viewcell* vc, const void* extra, uint32_t** ids, uint32_t* count,
-                        void* stats, char* err, size_t err_size)
-{
-    const pvs_request* req = extra;
-    (void)vc; /* the request carries the same viewcell */
-    return pvs_method_compute(user, req, ids, count, stats, err, err_size);
-}
-
-/* What the loop keeps about a PVS besides the worker's result: the head
- * poses predicted at request time over the use window, to log how far each
- * frame's real pose was from what the viewcell was sized for. */
-#define PREDICTION_STEPS 64
-typedef struct pvs_slot {
-    tv_pvs_result r;
-    uint8_t* mask; /* triangle_count bytes */
-    pred_pose predicted[PREDICTION_STEPS];
-    double pred_t0, pred_dt;
-    bool valid;
-} pvs_slot;
-
 typedef struct replay_state {
     const tv_replay_desc* d;
     tv_app_scene s;
     pred_path path;
     hmd_sim sim;
-    pred_predictor predictor;
-    pred_error_tracker tracker;
-    pvs_method* method;
-    tv_worker* worker;
+    tv_pvs_pipeline pipe;
     tv_replay_log* log;
     rnd_target* target;
     uint8_t *rgba_full, *rgba_pvs;
     uint32_t* ids_full;
     tv_worst_frame worst;
-    pvs_slot current, pending; /* pending: the one in flight (its predictions) */
-    pred_pose sample, latched;
-    bool have_sample, have_latched;
-    double latency_est_s;
+    pred_pose sample;
+    bool have_sample;
     float eye_fov_v;
-    char latency_name[64];
 } replay_state;
 
-static void slot_release(pvs_slot* s)
-{
-    tv_pvs_result_free(&s->r);
-    free(s->mask);
-    memset(s, 0, sizeof *s);
-}
-
-static void predicted_at(const pvs_slot* s, double t, pred_pose* out)
-{
-    double u = (t - s->pred_t0) / s->pred_dt;
-    int i = u <= 0 ? 0 : u >= PREDICTION_STEPS - 1 ? PREDICTION_STEPS - 2 : (int)u;
-    double f = u - i;
-    f = f < 0 ? 0 : f > 1 ? 1 : f;
-    pred_pose_lerp(&s->predicted[i], &s->predicted[i + 1], f, out);
-    out->t = t;
-}
-
-/* Feeds every sensor sample up to time t to the predictor and the error
- * tracker, and latches the newest one. */
+/* Feeds every sensor sample up to time t to the PVS pipeline, whose newest
+ * one is the latched pose. */
 static void feed_samples(replay_state* st, double t)
 {
     while (st->have_sample && st->sample.t <= t) {
-        pred_predictor_update(&st->predictor, &st->sample);
-        pred_error_tracker_observe(&st->tracker, &st->sample);
-        st->latched = st->sample;
-        st->have_latched = true;
+        tv_pvs_pipeline_observe(&st->pipe, &st->sample);
         st->have_sample = hmd_sim_next(&st->sim, &st->sample);
-    }
-}
-
-/* Records this frame's predictions at every tracked horizon, so the
- * adaptive policy's error quantiles follow the motion online. */
-static void track_horizons(replay_state* st, double t)
-{
-    for (int h = 0; h < st->tracker.horizon_count; h++) {
-        pred_pose p;
-        if (pred_predictor_predict(&st->predictor, t + st->tracker.horizons_s[h], &p))
-            pred_error_tracker_push(&st->tracker, h, &p);
     }
 }
 
@@ -111,64 +53,10 @@ static const char* miss_token(pred_viewcell_miss why)
     return "unknown";
 }
 
-/* `first`: the start-up PVS is used from the first frame on, so its window
- * starts at the request instead of one latency later. */
-static bool submit_request(replay_state* st, double t_request, bool first, char* err, size_t err_size)
-{
-    const tv_replay_desc* d = st->d;
-    pred_viewcell_desc vd = d->viewcell;
-    double frame_s = 1.0 / st->sim.desc.display_rate_hz;
-    /* requests go out back to back: this PVS is in use from its arrival until
-     * the next one arrives one latency later, plus a frame of slack */
-    vd.latency_s = first ? 0.0 : st->latency_est_s;
-    vd.window_s = (first ? 2.0 : 1.0) * st->latency_est_s + frame_s;
-    pvs_request req;
-    memset(&req, 0, sizeof req);
-    if (!pred_viewcell_size(&vd, &st->predictor, &st->tracker, t_request, &req.vc)) {
-        snprintf(err, err_size, "%s: no sensor sample before t = %.3f s", d->path, t_request);
-        return false;
-    }
-    pvs_slot* p = &st->pending;
-    p->pred_t0 = t_request;
-    p->pred_dt = (vd.latency_s + vd.window_s + 2.0 * frame_s) / (PREDICTION_STEPS - 1);
-    for (int i = 0; i < PREDICTION_STEPS; i++)
-        pred_predictor_predict(&st->predictor, t_request + i * p->pred_dt, &p->predicted[i]);
-    pred_pose a, b;
-    predicted_at(p, req.vc.t_begin, &a);
-    predicted_at(p, req.vc.t_end, &b);
-    for (int k = 0; k < 3; k++)
-        req.motion[k] = b.p[k] - a.p[k];
-    req.current = st->latched;
-    req.eye_fov_h_deg = d->viewcell.display_fov_h_deg;
-    tv_worker_submit(st->worker, &req.vc, &req, t_request);
-    return true;
-}
-
-static bool adopt(replay_state* st, tv_pvs_result* r, char* err, size_t err_size)
-{
-    pvs_slot next = st->pending;
-    next.r = *r;
-    next.mask = calloc(st->s.scene.triangle_count ? st->s.scene.triangle_count : 1, 1);
-    if (!next.mask) {
-        tv_pvs_result_free(r);
-        snprintf(err, err_size, "out of memory");
-        return false;
-    }
-    for (uint32_t i = 0; i < r->count; i++)
-        next.mask[r->ids[i]] = 1;
-    next.valid = true;
-    slot_release(&st->current);
-    st->current = next;
-    tv_replay_log_pvs(st->log, r->compute_ms);
-    if (st->d->latency_model == TV_LATENCY_MEASURED) /* size the next window for what computing takes */
-        st->latency_est_s = 0.7 * st->latency_est_s + 0.3 * r->compute_ms * 1e-3 * st->d->latency_factor;
-    return true;
-}
-
 static bool evaluate_eye(replay_state* st, uint64_t frame, double t_frame, double t_submit, int e,
                          const pred_pose* eye, const pred_pose* predicted_eye, char* err, size_t err_size)
 {
-    const pvs_slot* cur = &st->current;
+    const tv_pvs_slot* cur = &st->pipe.current;
     size_t pixels = (size_t)st->d->width * st->d->height;
     rnd_camera cam = tv_camera_at_pose(eye, st->eye_fov_v, st->d->near_m, st->d->far_m);
     rnd_draw_stats full_st, pvs_st;
@@ -188,7 +76,7 @@ static bool evaluate_eye(replay_state* st, uint64_t frame, double t_frame, doubl
         .t = t_frame,
         .eye = e,
         .pose = *eye,
-        .pose_age_ms = (t_submit - st->latched.t) * 1e3,
+        .pose_age_ms = (t_submit - st->pipe.last.t) * 1e3,
         .predicted = *predicted_eye,
         .pred_err_pos_m = pred_vec3_dist(eye->p, predicted_eye->p),
         .pred_err_rot_deg = pred_quat_angle_deg(eye->q, predicted_eye->q),
@@ -228,7 +116,7 @@ static void progress(const replay_state* st, uint64_t frame, uint64_t frames, do
     double eta = frame + 1 < frames ? elapsed * (double)(frames - frame - 1) / (double)(frame + 1) : 0.0;
     fprintf(stderr, "\r[%.*s%*s] %3d%% frame %llu/%llu, PVS %u, %.0f s left ", done,
             "##############################", width - done, "", (int)(100 * (frame + 1) / frames),
-            (unsigned long long)frame + 1, (unsigned long long)frames, st->current.r.id, eta);
+            (unsigned long long)frame + 1, (unsigned long long)frames, st->pipe.current.r.id, eta);
     if (frame + 1 == frames)
         fputc('\n', stderr);
 }
@@ -237,6 +125,7 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
 {
     const tv_replay_desc* d = st->d;
     double cpu_s = d->cpu_ms * 1e-3;
+    double frame_s = 1.0 / st->sim.desc.display_rate_hz;
     double wall0 = tv_now_ms();
     for (uint64_t k = 0; k < frames; k++) {
         double t_frame = hmd_display_time(&st->sim, k);
@@ -244,19 +133,18 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
         /* late latching: the pose is the newest sample at submit time;
          * without it, the newest at the frame's start */
         feed_samples(st, d->no_late_latch ? t_frame : t_submit);
-        pred_pose head = st->latched;
+        pred_pose head = st->pipe.last;
         feed_samples(st, t_submit);
-        track_horizons(st, t_submit);
+        tv_pvs_pipeline_track(&st->pipe, t_submit);
 
-        tv_pvs_result r;
-        int polled = tv_worker_poll(st->worker, t_submit, &r, err, err_size);
-        if (polled < 0 || (polled == 1 && !adopt(st, &r, err, err_size)))
+        int stepped = tv_pvs_pipeline_step(&st->pipe, t_submit, frame_s, true, err, err_size);
+        if (stepped < 0)
             return false;
-        if (!tv_worker_busy(st->worker) && !submit_request(st, t_submit, false, err, err_size))
-            return false;
+        if (stepped == 1)
+            tv_replay_log_pvs(st->log, st->pipe.current.r.compute_ms);
 
         pred_pose predicted_head;
-        predicted_at(&st->current, t_submit, &predicted_head);
+        tv_pvs_pipeline_predicted(&st->pipe, t_submit, &predicted_head);
         tv_replay_log_prediction(st->log, pred_vec3_dist(head.p, predicted_head.p),
                                  pred_quat_angle_deg(head.q, predicted_head.q));
         if (k % (uint64_t)d->every == 0) {
@@ -277,25 +165,17 @@ static bool setup(replay_state* st, char* err, size_t err_size)
     const tv_replay_desc* d = st->d;
     size_t pixels = (size_t)d->width * d->height;
     hmd_sim_init(&st->sim, &d->hmd, &st->path);
-    pred_predictor_init(&st->predictor, &d->predictor);
-    if (!pred_error_tracker_init(&st->tracker, &(pred_error_tracker_desc){0})) {
-        snprintf(err, err_size, "prediction error tracker: out of memory");
-        return false;
-    }
     st->eye_fov_v = rnd_fov_y_from_x(d->viewcell.display_fov_h_deg, (float)d->width / (float)d->height);
-    st->method = pvs_method_create(&d->method, st->s.ctx, &st->s.scene, st->s.gpu, err, err_size);
-    if (!st->method)
+    tv_pvs_pipeline_desc pd = {.method = d->method, .predictor = d->predictor, .viewcell = d->viewcell,
+                               .latency_model = d->latency_model, .latency_s = d->latency_s,
+                               .latency_factor = d->latency_factor};
+    if (!tv_pvs_pipeline_start(&st->pipe, &pd, st->s.ctx, &st->s.scene, st->s.gpu, err, err_size))
         return false;
-    tv_worker_desc wd = {.compute = compute_pvs, .user = st->method, .stats_size = sizeof(pvs_method_stats),
-                         .extra_size = sizeof(pvs_request), .model = d->latency_model,
-                         .fixed_latency_s = d->latency_s, .factor = d->latency_factor};
-    tv_worker_describe(&wd, st->latency_name, sizeof st->latency_name);
-    st->worker = tv_worker_start(&wd, err, err_size);
     st->target = rnd_target_create(st->s.ctx, d->width, d->height, err, err_size);
     st->rgba_full = malloc(pixels * 4);
     st->rgba_pvs = malloc(pixels * 4);
     st->ids_full = malloc(pixels * sizeof(uint32_t));
-    if (!st->worker || !st->target || !st->rgba_full || !st->rgba_pvs || !st->ids_full ||
+    if (!st->target || !st->rgba_full || !st->rgba_pvs || !st->ids_full ||
         !tv_worst_frame_init(&st->worst, d->width, d->height)) {
         if (!err[0])
             snprintf(err, err_size, "out of memory");
@@ -312,25 +192,21 @@ static bool first_pvs(replay_state* st, char* err, size_t err_size)
     double t0 = hmd_display_time(&st->sim, 0) + st->d->cpu_ms * 1e-3;
     st->have_sample = hmd_sim_next(&st->sim, &st->sample);
     feed_samples(st, t0);
-    if (!submit_request(st, t0, true, err, err_size))
+    if (!tv_pvs_pipeline_first(&st->pipe, t0, 1.0 / st->sim.desc.display_rate_hz, err, err_size))
         return false;
-    tv_pvs_result r;
-    int rc = tv_worker_wait(st->worker, &r, err, err_size);
-    return rc == 1 && adopt(st, &r, err, err_size);
+    tv_replay_log_pvs(st->log, st->pipe.current.r.compute_ms);
+    return true;
 }
 
 static void teardown(replay_state* st)
 {
-    tv_worker_stop(st->worker);
-    pvs_method_destroy(st->method);
-    slot_release(&st->current);
+    tv_pvs_pipeline_stop(&st->pipe);
     if (st->target)
         rnd_target_destroy(st->s.ctx, st->target);
     free(st->rgba_full);
     free(st->rgba_pvs);
     free(st->ids_full);
     tv_worst_frame_free(&st->worst);
-    pred_error_tracker_free(&st->tracker);
 }
 
 int tv_replay_run(const tv_replay_desc* d)
@@ -339,7 +215,6 @@ int tv_replay_run(const tv_replay_desc* d)
     replay_state st;
     memset(&st, 0, sizeof st);
     st.d = d;
-    st.latency_est_s = d->latency_model == TV_LATENCY_FIXED ? d->latency_s : 0.05;
     double wall0 = tv_now_ms();
     if (!tv_mkdirs(d->out_dir)) {
         fprintf(stderr, "trimvr replay: error: %s: cannot create the output folder\n", d->out_dir);
@@ -373,7 +248,7 @@ int tv_replay_run(const tv_replay_desc* d)
             .method = pvs_method_name(d->method.kind),
             .predictor = pred_kind_name(d->predictor.kind),
             .policy = d->viewcell.policy == PRED_POLICY_FIXED ? "fixed" : "adaptive",
-            .latency_model = st.latency_name,
+            .latency_model = st.pipe.latency_name,
             .scene_tris = st.s.scene.triangle_count,
             .width = d->width,
             .height = d->height,

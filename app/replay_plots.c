@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "replay_plots.h"
 
+#include "gnuplot.h"
 #include "image_io.h"
 #include "log.h"
 
@@ -96,28 +97,6 @@ bool tv_worst_frame_write(const tv_worst_frame* w, const char* dir, char* err, s
 enum { COL_T = 2, COL_POSE_AGE = 11, COL_PRED_POS = 19, COL_PRED_ROT = 20, COL_DELTA = 22, COL_FOV = 23,
        COL_INSIDE = 26, COL_PVS_FRACTION = 29, COL_PSNR = 30, COL_FN = 31, COL_PVS_MS = 33,
        COL_RENDER_PVS = 34, COL_RENDER_FULL = 35 };
-
-FILE* tv_gnuplot_begin(const char* dir, const char* name, const char* writer)
-{
-    char script[4200];
-    snprintf(script, sizeof script, "%s/%s", dir, name);
-    FILE* f = fopen(script, "w");
-    if (!f)
-        tv_log(TV_LOG_WARN, "%s: cannot write the plot script", script);
-    else
-        fprintf(f, "# gnuplot script written by %s; run: gnuplot %s (in this folder)\n", writer, name);
-    return f;
-}
-
-void tv_gnuplot_finish(FILE* f, const char* dir, const char* name, const char* kept)
-{
-    fclose(f);
-    char cmd[8600];
-    snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot %s 2>/dev/null", dir, name);
-    if (system(cmd) != 0)
-        tv_log(TV_LOG_WARN, "gnuplot failed or is not installed: no plots (run scripts/setup.sh); %s are complete",
-               kept);
-}
 
 void tv_replay_plots(const char* dir)
 {

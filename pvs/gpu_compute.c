@@ -17,29 +17,6 @@
  * corners lie exactly on the latter and must not be clipped. */
 #define PVS_RASTER_FAR_SCALE 1.01f
 
-static bool finite3(const float v[3])
-{
-    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
-}
-
-static bool check_viewcell(const pvs_viewcell* vc, char* err, size_t err_size)
-{
-    vec3 f = {vc->forward[0], vc->forward[1], vc->forward[2]}, u = {vc->up[0], vc->up[1], vc->up[2]}, c;
-    glm_vec3_cross(f, u, c);
-    const char* why = !finite3(vc->v0) || !finite3(vc->forward) || !finite3(vc->up) || !isfinite(vc->delta) ||
-                              !isfinite(vc->far_m)
-                          ? "non-finite value"
-                      : glm_vec3_norm(f) == 0.0f                               ? "zero forward vector"
-                      : glm_vec3_norm(c) <= 1e-6f * glm_vec3_norm(f) * glm_vec3_norm(u) ? "up parallel to forward"
-                      : !(vc->delta >= 0.0f)                                   ? "negative delta"
-                      : !(vc->fov_pvs_deg > 0.0f && vc->fov_pvs_deg < 180.0f) ? "fov_pvs_deg outside (0, 180)"
-                      : !(vc->far_m > 0.0f)                                    ? "far_m <= 0"
-                                                                               : NULL;
-    if (why)
-        snprintf(err, err_size, "pvs_compute: invalid viewcell: %s", why);
-    return why == NULL;
-}
-
 /* Vertical FOV of the PVS frustum: fov_pvs_deg spans the smaller axis, so
  * the frustum contains the square one of half-angle α that predict/ sizes
  * the viewcell for (docs/prediction.md) at any resolution. */
@@ -384,8 +361,11 @@ bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char
 {
     assert(ctx && vc && out);
     const double start = tv_now_ms();
-    if (!check_viewcell(vc, err, err_size))
+    const char* invalid = pvs_viewcell_invalid(vc);
+    if (invalid) {
+        snprintf(err, err_size, "pvs_compute: invalid viewcell: %s", invalid);
         return false;
+    }
     *out = (pvs_result){0};
     pvs_stats* st = &out->stats;
     rnd_camera cam = pvs_apex_camera(ctx, vc);

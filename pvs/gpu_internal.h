@@ -7,10 +7,12 @@
 #include "layers.h"
 #include "octree.h"
 #include "pvs.h"
-#include "vk_internal.h"
+#include "render_vk.h"
 
-#include "config.h"
-#include "pvs_layout.glsl"
+#include "mesh_shared.h"
+#include "pvs_shared.h"
+
+#include <stddef.h>
 
 /* Mirrors pvs_view_gpu in shaders/pvs_common.glsl (std430). */
 typedef struct pvs_view_gpu {
@@ -20,6 +22,10 @@ typedef struct pvs_view_gpu {
     float near_dist, delta, focal_px, max_width;      /* max_width: clamp of infinite trim widths */
     uint32_t width, height, k, triangle_count;
 } pvs_view_gpu;
+_Static_assert(offsetof(pvs_view_gpu, apex) == 64 && offsetof(pvs_view_gpu, up) == 112 &&
+                   offsetof(pvs_view_gpu, tan_half_x) == 128 && offsetof(pvs_view_gpu, near_dist) == 144 &&
+                   offsetof(pvs_view_gpu, width) == 160 && sizeof(pvs_view_gpu) == 176,
+               "pvs_view_gpu must match pvs_view_buf's std430 layout in pvs_common.glsl");
 
 /* Push constants of every PVS pipeline (mirrors pvs_common.glsl). */
 typedef struct pvs_push {
@@ -28,6 +34,8 @@ typedef struct pvs_push {
     uint32_t layer;        /* layer index (statistics) */
     uint32_t kind;         /* TV_PVS_KIND_* for the P2 pipelines */
 } pvs_push;
+_Static_assert(offsetof(pvs_push, kind) == 12 && sizeof(pvs_push) == 16,
+               "pvs_push must match pvs_push_block in pvs_common.glsl");
 
 enum { PVS_PIPE_CLASSIFY, PVS_PIPE_RESOLVE, PVS_PIPE_RESOLVE_GROUP, PVS_PIPE_GATHER, PVS_PIPE_FF, PVS_PIPE_BF,
        PVS_PIPE_TRIM, PVS_PIPE_UMBRA, PVS_PIPE_COUNT };

@@ -3,7 +3,7 @@
  * pvs_create builds everything that does not depend on the viewcell (welding
  * and triangle adjacency, the octree, GPU buffers and pipelines); pvs_compute
  * then runs, per request, P0 on the CPU (octree layers seen from the apex v*)
- * and P1-P4 on the GPU (docs/trim-regions.md, "GPU passes"), and returns the
+ * and P1-P4 on the GPU (docs/pvs-gpu-passes.md), and returns the
  * sorted unique ids of every triangle potentially visible from the
  * double-cone viewcell.
  *
@@ -15,6 +15,7 @@
 #ifndef TRIMVR_PVS_H
 #define TRIMVR_PVS_H
 
+#include "pvs_viewcell.h"
 #include "render.h"
 #include "scene.h"
 
@@ -39,21 +40,6 @@ typedef struct pvs_desc {
                                         thread; 0: 8 (the paper's N) on a GPU, never on a CPU device;
                                         UINT32_MAX: never */
 } pvs_desc;
-
-/* A double-cone viewcell with its widened field of view. fov_pvs_deg is the
- * full angle along the smaller image axis of the PVS resolution (the
- * vertical one for landscape; the larger axis follows from the aspect), so
- * the PVS frustum contains the square pyramid of half-angle
- * α = fov_pvs_deg / 2 that predict/ sizes the viewcell for; z = Δ / tan α. */
-typedef struct pvs_viewcell {
-    float v0[3];          /* centre of the viewcell */
-    float forward[3];     /* view axis (need not be unit length) */
-    float up[3];          /* not parallel to forward */
-    float delta;          /* radius Δ of the double cone's base disk, metres, >= 0 */
-    float fov_target_deg; /* display FOV (informational: sizing is the caller's job) */
-    float fov_pvs_deg;    /* widened FOV the PVS is computed for, in (0, 180) */
-    float far_m;          /* far plane of the eyes' cameras, measured from v0 */
-} pvs_viewcell;
 
 typedef struct pvs_stats {
     double ms[5];                 /* P0..P4: P0, P4 CPU wall clock; P1-P3 GPU timestamps summed

@@ -3,8 +3,8 @@
 #ifndef TV_PVS_COMMON_GLSL
 #define TV_PVS_COMMON_GLSL
 
-#include "config.h"
-#include "pvs_layout.glsl"
+#include "mesh_shared.h"
+#include "pvs_shared.h"
 
 // Vertex shaders define PVS_RW as readonly before including this file: the
 // device enables fragment but not vertex-stage stores.

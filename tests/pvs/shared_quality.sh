@@ -1,6 +1,6 @@
 #!/bin/sh
 # The quality bar for trim regions on real scenes (Sponza and the OpenArena levels)
-# (docs/results.md, "Where trim regions stand"): at delta = 10 cm (or the
+# (docs/results.md, "Trim-region PVS"): at delta = 10 cm (or the
 # given delta), in every
 # sampled viewcell (the two largest open-floor points of each level, 50
 # sample views of 320x180 each, as `trimvr bench`) FN pixels at most 0.005 %

@@ -8,7 +8,7 @@
  * scene, camera or shading. Regenerate them after an intended change with
  *   TRIMVR_UPDATE_GOLDEN=1 ctest -R render_scenes
  * On a mismatch the render is written to <build>/tests/render/<scene>.actual.png. */
-#include "config.h"
+#include "mesh_shared.h"
 #include "image_compare.h"
 #include "image_io.h"
 #include "procedural.h"
