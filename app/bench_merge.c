@@ -1,6 +1,7 @@
 /* trimvr bench merge: part files of a sharded sweep into the report a
  * serial run writes (docs/bench.md). */
 #include "bench_part.h"
+#include "log.h"
 
 #include "fs.h"
 
@@ -26,7 +27,7 @@ static void settings_differ(const char* a, const char* sa, const char* b, const 
         i++;
     }
     int la = (int)strcspn(sa + start, ";"), lb = (int)strcspn(sb + start, ";");
-    fprintf(stderr, "trimvr bench merge: error: %s and %s: parts of different settings (%.*s vs %.*s)\n", a, b, la,
+    tv_log(TV_LOG_ERROR, "%s and %s: parts of different settings (%.*s vs %.*s)", a, b, la,
             sa + start, lb, sb + start);
 }
 
@@ -39,15 +40,15 @@ static bool check_parts(const tv_bench_part* p, char* const* files, int n)
     for (int i = 0; ok && i < n; i++) {
         const char *a = files[0], *b = files[i];
         if (strcmp(p[i].version, p[0].version) != 0)
-            fprintf(stderr, "trimvr bench merge: error: %s (version %s) and %s (version %s): parts of different "
-                            "trimvr versions\n", a, p[0].version, b, p[i].version);
+            tv_log(TV_LOG_ERROR, "%s (version %s) and %s (version %s): parts of different "
+                            "trimvr versions", a, p[0].version, b, p[i].version);
         else if (strcmp(p[i].settings, p[0].settings) != 0)
             settings_differ(a, p[0].settings, b, p[i].settings);
         else if (p[i].shards != p[0].shards)
-            fprintf(stderr, "trimvr bench merge: error: %s (%d shards) and %s (%d shards): parts of different "
-                            "slicings\n", a, p[0].shards, b, p[i].shards);
+            tv_log(TV_LOG_ERROR, "%s (%d shards) and %s (%d shards): parts of different "
+                            "slicings", a, p[0].shards, b, p[i].shards);
         else if (seen[p[i].shard])
-            fprintf(stderr, "trimvr bench merge: error: %s and %s: both are shard %d/%d\n", files[seen[p[i].shard] - 1],
+            tv_log(TV_LOG_ERROR, "%s and %s: both are shard %d/%d", files[seen[p[i].shard] - 1],
                     b, p[i].shard, p[i].shards);
         ok = strcmp(p[i].version, p[0].version) == 0 && strcmp(p[i].settings, p[0].settings) == 0 &&
              p[i].shards == p[0].shards && !seen[p[i].shard];
@@ -55,7 +56,7 @@ static bool check_parts(const tv_bench_part* p, char* const* files, int n)
     }
     for (int s = 0; ok && s < p[0].shards; s++)
         if (!seen[s]) {
-            fprintf(stderr, "trimvr bench merge: error: shard %d/%d is missing (%d part files given)\n", s,
+            tv_log(TV_LOG_ERROR, "shard %d/%d is missing (%d part files given)", s,
                     p[0].shards, n);
             ok = false;
         }
@@ -72,7 +73,7 @@ static bool write_merged(const tv_bench_part* p, int n, const char* out)
         total += p[i].count;
     tv_bench_cell* cells = malloc(((size_t)total + 1) * sizeof *cells);
     if (!cells) {
-        fprintf(stderr, "trimvr bench merge: error: out of memory for %d viewcell results\n", total);
+        tv_log(TV_LOG_ERROR, "out of memory for %d viewcell results", total);
         return false;
     }
     char devices[1024] = "", merged[256];
@@ -92,7 +93,7 @@ static bool write_merged(const tv_bench_part* p, int n, const char* out)
     bool ok = true;
     for (int i = 1; ok && i < total; i++)
         if (by_row_then_index(&cells[i - 1], &cells[i]) == 0) {
-            fprintf(stderr, "trimvr bench merge: error: row %d viewcell %d appears twice\n", cells[i].row,
+            tv_log(TV_LOG_ERROR, "row %d viewcell %d appears twice", cells[i].row,
                     cells[i].index);
             ok = false;
         }
@@ -105,13 +106,13 @@ static bool write_merged(const tv_bench_part* p, int n, const char* out)
                           .fov_pvs = p[0].fov_pvs, .wall_s = wall};
     char err[4300];
     if (ok && nrows <= 0) {
-        fprintf(stderr, "trimvr bench merge: error: %s\n", nrows < 0 ? "out of memory" : "the parts hold no results");
+        tv_log(TV_LOG_ERROR, "%s", nrows < 0 ? "out of memory" : "the parts hold no results");
         ok = false;
     }
     if (ok && !(ok = tv_mkdirs(out)))
-        fprintf(stderr, "trimvr bench merge: error: %s: cannot create the output folder\n", out);
+        tv_log(TV_LOG_ERROR, "%s: cannot create the output folder", out);
     if (ok && !(ok = tv_bench_write(out, &info, rows, nrows, err, sizeof err)))
-        fprintf(stderr, "trimvr bench merge: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
     if (ok) {
         tv_bench_plots(out, rows, nrows);
         printf("trimvr bench merge: %d parts, %d rows -> %s/bench.md, bench.csv, bench.json\n", n, nrows, out);
@@ -140,7 +141,7 @@ int tv_cmd_bench_merge(int argc, char** argv)
         else if (strncmp(argv[i], "--out=", 6) == 0)
             out = argv[i] + 6;
         else if (strncmp(argv[i], "--", 2) == 0) {
-            fprintf(stderr, "trimvr bench merge: error: unknown option '%s' (see trimvr bench merge --help)\n",
+            tv_log(TV_LOG_ERROR, "unknown option '%s' (see trimvr bench merge --help)",
                     argv[i]);
             free(files);
             return 2;
@@ -148,7 +149,7 @@ int tv_cmd_bench_merge(int argc, char** argv)
             files[n++] = argv[i];
     }
     if (!out || n == 0) {
-        fprintf(stderr, "trimvr bench merge: error: need --out DIR and at least one part file\n");
+        tv_log(TV_LOG_ERROR, "need --out DIR and at least one part file");
         free(files);
         return 2;
     }
@@ -158,7 +159,7 @@ int tv_cmd_bench_merge(int argc, char** argv)
     int read = 0;
     for (; ok && read < n; read++)
         if (!(ok = tv_bench_part_read(files[read], &parts[read], err, sizeof err)))
-            fprintf(stderr, "trimvr bench merge: error: %s\n", err);
+            tv_log(TV_LOG_ERROR, "%s", err);
     ok = ok && check_parts(parts, files, n) && write_merged(parts, n, out);
     for (int i = 0; parts && i < read; i++)
         tv_bench_part_free(&parts[i]);

@@ -5,6 +5,7 @@
 #include "app_scene.h"
 #include "args.h"
 #include "bench_part.h"
+#include "auto_place.h"
 #include "bench_report.h"
 #include "bench_shard.h"
 #include "cli_viewcell.h"
@@ -63,47 +64,49 @@ typedef struct bench_run {
     double t0;
     char device[256];
     bool cells_printed; /* this scene's viewcells were listed */
+    char placed_spec[256]; /* the scene whose viewcells were placed automatically */
+    float placed_pos[3 * MAX_LIST], placed_dir[3 * MAX_LIST];
+    int nplaced;
 } bench_run;
 
 /* The viewcells of one scene at radius delta: --pos if given, else the
  * scene's bundled walk (builtin:NAME and sponza: paths/NAME-walk.csv), else
- * floor points of an OpenArena level. -1 with a message when it has none. */
-static int scene_cells(const bench_run* b, const char* spec, const tv_app_scene* s, float delta, tv_eval_cell** out)
+ * placed automatically (app/auto_place.h: q3 vis floor points of an
+ * OpenArena level, the walkable-floor rule elsewhere), once per scene. -1
+ * with a message when it has none. */
+static int scene_cells(bench_run* b, const char* spec, const tv_app_scene* s, float delta, tv_eval_cell** out)
 {
     const bench_opts* o = b->o;
-    char err[512];
-    if (b->npos > 0) {
-        *out = calloc((size_t)b->npos, sizeof **out);
-        for (int i = 0; *out && i < b->npos; i++) {
-            tv_viewcell_make(&b->pos[3 * i], o->dir, delta, o->fov, o->fov_pvs, &(*out)[i].vc);
-            for (int k = 0; k < 3; k++)
-                (*out)[i].motion[k] = 2.0 * delta * (*out)[i].vc.forward[k];
-        }
-        return *out ? b->npos : -1;
+    char err[512], walk[4300];
+    if (b->npos == 0 && tv_bundled_walk(spec, walk, sizeof walk)) {
+        char scene_spec[8] = "-"; /* non-empty: the path's own scene line is not wanted */
+        int n = tv_eval_path_cells(walk, o->every, o->max_cells, delta, o->fov, o->fov_pvs, out, scene_spec,
+                                   sizeof scene_spec, err, sizeof err);
+        if (n < 0)
+            tv_log(TV_LOG_ERROR, "%s: %s", spec, err);
+        return n;
     }
-    if (strncmp(spec, "oa:", 3) == 0) {
-        char json[4200];
-        tv_eval_pvs_json_of(spec, json, sizeof json);
-        float pos[3 * MAX_LIST], dir[3 * MAX_LIST];
+    if (b->npos == 0 && strcmp(b->placed_spec, spec) != 0) {
         int want = o->max_cells > 0 && o->max_cells < MAX_LIST ? o->max_cells : MAX_LIST;
-        int n = tv_eval_floor_points(&s->scene, json, want, pos, dir, err, sizeof err);
-        *out = n > 0 ? calloc((size_t)n, sizeof **out) : NULL;
-        for (int i = 0; *out && i < n; i++) {
-            tv_viewcell_make(&pos[3 * i], &dir[3 * i], delta, o->fov, o->fov_pvs, &(*out)[i].vc);
-            for (int k = 0; k < 3; k++)
-                (*out)[i].motion[k] = 2.0 * delta * dir[3 * i + k];
-        }
-        if (n <= 0 || !*out)
-            tv_log(TV_LOG_ERROR, "%s: %s", spec, n < 0 ? err : "no floor point found");
-        return n > 0 && *out ? n : -1;
+        const char* rule = "";
+        b->nplaced = tv_auto_viewcells(spec, &s->scene, want, b->placed_pos, b->placed_dir, &rule, err, sizeof err);
+        snprintf(b->placed_spec, sizeof b->placed_spec, "%s", spec);
+        if (b->nplaced < 0)
+            tv_log(TV_LOG_ERROR, "%s: %s", spec, err);
+        else
+            fprintf(stderr, "bench %s: no bundled walk: %d viewcells placed by the %s rule (docs/bench.md)\n", spec,
+                    b->nplaced, rule);
     }
-    char rel[256], buf[4300], scene_spec[8] = "-"; /* non-empty: the path's own scene line is not wanted */
-    snprintf(rel, sizeof rel, "paths/%s-walk.csv", strncmp(spec, "builtin:", 8) == 0 ? spec + 8 : spec);
-    int n = tv_eval_path_cells(tv_bundled_file(rel, buf, sizeof buf), o->every, o->max_cells, delta, o->fov,
-                               o->fov_pvs, out, scene_spec, sizeof scene_spec, err, sizeof err);
-    if (n < 0)
-        tv_log(TV_LOG_ERROR, "%s: %s (no bundled walk: pass --pos)", spec, err);
-    return n;
+    int n = b->npos > 0 ? b->npos : b->nplaced;
+    const float* pos = b->npos > 0 ? b->pos : b->placed_pos;
+    *out = n > 0 ? calloc((size_t)n, sizeof **out) : NULL;
+    for (int i = 0; *out && i < n; i++) {
+        const float* dir = b->npos > 0 ? o->dir : &b->placed_dir[3 * i];
+        tv_viewcell_make(&pos[3 * i], dir, delta, o->fov, o->fov_pvs, &(*out)[i].vc);
+        for (int k = 0; k < 3; k++)
+            (*out)[i].motion[k] = 2.0 * delta * (*out)[i].vc.forward[k];
+    }
+    return *out ? n : -1;
 }
 
 /* Wall clock of three full-scene draws at the PVS resolution and FOV from
@@ -369,8 +372,10 @@ static bool write_report(const bench_run* b, const char* command, const char* da
 
 int tv_cmd_bench(int argc, char** argv)
 {
-    if (argc > 0 && strcmp(argv[0], "merge") == 0)
+    if (argc > 0 && strcmp(argv[0], "merge") == 0) {
+        tv_log_set_program("bench merge");
         return tv_cmd_bench_merge(argc - 1, argv + 1);
+    }
     bench_opts o = {.scenes = DEFAULT_SCENES, .deltas = "0.05,0.1,0.2,0.3", .methods = "tr,sas,frompoint,gt,q3vis",
                     .out = "out/bench", .dir = {0, 0, -1}, .fov = 60.0f, .fov_pvs = 90.0f, .every = 0,
                     .max_cells = DEFAULT_CELLS, .samples = 50, .res = {320, 180}, .k = TV_ARGS_DEFAULT_K};
@@ -398,12 +403,11 @@ int tv_cmd_bench(int argc, char** argv)
     };
     const char* summary =
         "Runs every PVS method on the same viewcells of each scene at each delta and measures it against sampled\n"
-        "ground truth: PVS and GT size, FP/FN rates, false-negative pixels, PSNR, SSIM, and PVS time beside the\n"
-        "ground-truth time and a full-scene render at the PVS resolution, in the same run, with 95 % intervals\n"
-        "over the viewcells. Viewcells: the scene's bundled walk (paths/NAME-walk.csv), floor points for\n"
-        "OpenArena levels, or --pos. Writes DIR/bench.md, bench.csv, bench.json and fig14-16 PNGs; progress on\n"
-        "stderr. Sharded: --jobs prints one command per grid unit, each writing DIR/part-<i>.json, and\n"
-        "`trimvr bench merge --out OUT DIR/part-*.json` writes the same report. See docs/bench.md.";
+        "ground truth: PVS and GT size, FP/FN rates, false-negative pixels, PSNR, and PVS time beside the\n"
+        "ground-truth time and a full-scene render at the PVS resolution, in the same run. Viewcells: the\n"
+        "scene's bundled walk (paths/NAME-walk.csv), else placed automatically (floor points of OpenArena\n"
+        "levels, the walkable-floor rule of docs/scenes.md elsewhere), or --pos. Writes\n"
+        "DIR/bench.md, bench.csv, bench.json and fig14-16 PNGs; progress on stderr. See docs/bench.md.";
     tv_args_result r = tv_args_parse("bench", summary, args, (int)(sizeof args / sizeof args[0]), argc, argv);
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;

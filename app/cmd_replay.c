@@ -4,6 +4,7 @@
 #include "app_scene.h"
 #include "args.h"
 #include "cli_loop.h"
+#include "auto_place.h"
 #include "commands.h"
 #include "log.h"
 #include "replay.h"
@@ -27,7 +28,8 @@ static tv_args_result parse(replay_opts* o, int argc, char** argv)
 {
     const tv_arg own[] = {
         {"scene", TV_ARG_STRING, &o->scene, "S", "scene (default: the path's '# scene:' line)"},
-        {"path", TV_ARG_STRING, &o->path, "FILE", "head-motion path (default " DEFAULT_PATH ")"},
+        {"path", TV_ARG_STRING, &o->path, "FILE",
+         "head-motion path (default: with --scene its bundled walk or an automatic one, else " DEFAULT_PATH ")"},
         {"out", TV_ARG_STRING, &o->out, "DIR", "output folder (default out/replay; an earlier run's outputs are removed)"},
         {"latency-factor", TV_ARG_FLOAT, &o->latency_factor, "F", "measured latency model: compute time x F (overrides --latency-ms)"},
         {"res", TV_ARG_RES, o->res, "WxH", "eye image resolution (default 640x360)"},
@@ -110,10 +112,14 @@ int tv_cmd_replay(int argc, char** argv)
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;
     char path_buf[4300];
-    if (!o.path)
-        o.path = tv_bundled_file(DEFAULT_PATH, path_buf, sizeof path_buf);
     tv_replay_desc d;
     if (!validate(&o) || !fill_desc(&o, &d))
         return 2;
+    if (!o.path) {
+        d.path = o.scene ? tv_default_walk(o.scene, o.out, path_buf, sizeof path_buf)
+                         : tv_bundled_file(DEFAULT_PATH, path_buf, sizeof path_buf);
+        if (!d.path)
+            return 1;
+    }
     return tv_replay_run(&d);
 }

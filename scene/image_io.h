@@ -1,4 +1,5 @@
-/* image_io.h - image files through OpenImageIO (the only file that uses it).
+/* image_io.h - image files through OpenImageIO (image_io.cpp, the only file
+ * that uses it), or libpng and libjpeg in the portable build (image_io_png.c).
  *
  * Decoding gives RGBA8 whatever the source (grey, RGB, 16-bit, float): the
  * renderer samples one format. Every function returns false with a one-line
