@@ -2,6 +2,8 @@
 #include "app_scene.h"
 
 #include "clock.h"
+#include "fs.h"
+#include "log.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -76,35 +78,46 @@ bool tv_resolve_scene_spec(const char* spec, char* out, size_t out_size)
     return n >= 0 && (size_t)n < out_size;
 }
 
-bool tv_app_scene_open(const char* command, const char* spec, tv_app_scene* out)
+void tv_eval_pvs_json_of(const char* spec, char* buf, size_t size)
 {
-    return tv_app_scene_open_desc(command, spec, NULL, out);
+    tv_resolve_scene_spec(spec, buf, size - 16);
+    char* dot = strrchr(buf, '.');
+    if (dot)
+        strcpy(dot, ".pvs.json");
 }
 
-bool tv_app_scene_open_desc(const char* command, const char* spec, const rnd_desc* rd, tv_app_scene* out)
+/* The scene, then out_dir (when not NULL: after the scene, so that a failed
+ * load leaves no folder; before Vulkan, whose messages would precede the
+ * error), then the context and the upload. */
+static bool open_scene(const char* spec, const rnd_desc* rd, const char* out_dir, tv_app_scene* out)
 {
     memset(out, 0, sizeof *out);
     char resolved[4096], err[512];
     if (!tv_resolve_scene_spec(spec, resolved, sizeof resolved)) {
-        fprintf(stderr, "trimvr %s: error: scene name too long: %s\n", command, spec);
+        tv_log(TV_LOG_ERROR, "scene name too long: %s", spec);
         return false;
     }
     double t0 = tv_now_ms();
     if (!scn_load(resolved, &out->scene, err, sizeof err)) {
-        fprintf(stderr, "trimvr %s: error: %s\n", command, err);
+        tv_log(TV_LOG_ERROR, "%s", err);
+        return false;
+    }
+    if (out_dir && !tv_mkdirs(out_dir)) {
+        tv_log(TV_LOG_ERROR, "%s: cannot create the output folder", out_dir);
+        scn_scene_free(&out->scene);
         return false;
     }
     double t1 = tv_now_ms();
     out->load_ms = t1 - t0;
     out->ctx = rnd_create(rd, err, sizeof err);
     if (!out->ctx) {
-        fprintf(stderr, "trimvr %s: error: %s\n", command, err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         scn_scene_free(&out->scene);
         return false;
     }
     out->gpu = rnd_scene_create(out->ctx, &out->scene, err, sizeof err);
     if (!out->gpu) {
-        fprintf(stderr, "trimvr %s: error: %s: %s\n", command, resolved, err);
+        tv_log(TV_LOG_ERROR, "%s: %s", resolved, err);
         rnd_destroy(out->ctx);
         scn_scene_free(&out->scene);
         memset(out, 0, sizeof *out);
@@ -114,7 +127,22 @@ bool tv_app_scene_open_desc(const char* command, const char* spec, const rnd_des
     return true;
 }
 
-bool tv_app_scene_close(const char* command, tv_app_scene* s)
+bool tv_app_scene_open(const char* spec, tv_app_scene* out)
+{
+    return open_scene(spec, NULL, NULL, out);
+}
+
+bool tv_app_scene_open_desc(const char* spec, const rnd_desc* rd, tv_app_scene* out)
+{
+    return open_scene(spec, rd, NULL, out);
+}
+
+bool tv_app_scene_open_out(const char* spec, const char* out_dir, tv_app_scene* out)
+{
+    return open_scene(spec, NULL, out_dir, out);
+}
+
+bool tv_app_scene_close(tv_app_scene* s)
 {
     if (s->gpu)
         rnd_scene_destroy(s->ctx, s->gpu);
@@ -123,8 +151,8 @@ bool tv_app_scene_close(const char* command, tv_app_scene* s)
     scn_scene_free(&s->scene);
     memset(s, 0, sizeof *s);
     if (messages) {
-        fprintf(stderr, "trimvr %s: error: the Vulkan validation layer reported %u warning(s) or error(s)\n",
-                command, messages);
+        tv_log(TV_LOG_ERROR, "the Vulkan validation layer reported %u warning(s) or error(s)",
+               messages);
         return false;
     }
     return true;
@@ -138,4 +166,20 @@ rnd_camera tv_camera_at_pose(const pred_pose* pose, float fov_y_deg, float near_
     for (int k = 0; k < 4; k++)
         cam.orientation[k] = (float)pose->q[k];
     return cam;
+}
+
+int tv_app_load_path(const char* path_file, const char* scene_spec, pred_path* path, const char** spec)
+{
+    char err[512];
+    if (!pred_path_load(path_file, path, err, sizeof err)) {
+        tv_log(TV_LOG_ERROR, "%s", err);
+        return 1;
+    }
+    *spec = scene_spec ? scene_spec : path->scene;
+    if (!(*spec)[0]) {
+        tv_log(TV_LOG_ERROR, "%s has no '# scene:' line; pass --scene", path_file);
+        pred_path_free(path);
+        return 2;
+    }
+    return 0;
 }

@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "args.h"
+#include "log.h"
 
 #include <errno.h>
 #include <math.h>
@@ -86,8 +87,8 @@ tv_args_result tv_args_parse(const char* command, const char* summary, const tv_
             return TV_ARGS_HELP;
         }
         if (strncmp(tok, "--", 2) != 0) {
-            fprintf(stderr, "trimvr %s: error: unexpected argument '%s' (see trimvr %s --help)\n",
-                    command, tok, command);
+            tv_log(TV_LOG_ERROR, "unexpected argument '%s' (see trimvr %s --help)",
+                   tok, command);
             return TV_ARGS_ERROR;
         }
         const char* name = tok + 2;
@@ -98,13 +99,13 @@ tv_args_result tv_args_parse(const char* command, const char* summary, const tv_
             if (strlen(args[k].name) == name_len && strncmp(args[k].name, name, name_len) == 0)
                 a = &args[k];
         if (!a) {
-            fprintf(stderr, "trimvr %s: error: unknown option '--%.*s' (see trimvr %s --help)\n",
-                    command, (int)name_len, name, command);
+            tv_log(TV_LOG_ERROR, "unknown option '--%.*s' (see trimvr %s --help)",
+                   (int)name_len, name, command);
             return TV_ARGS_ERROR;
         }
         if (a->kind == TV_ARG_FLAG) {
             if (eq) {
-                fprintf(stderr, "trimvr %s: error: --%s takes no value\n", command, a->name);
+                tv_log(TV_LOG_ERROR, "--%s takes no value", a->name);
                 return TV_ARGS_ERROR;
             }
             *(bool*)a->out = true;
@@ -112,12 +113,12 @@ tv_args_result tv_args_parse(const char* command, const char* summary, const tv_
         }
         const char* value = eq ? eq + 1 : (i + 1 < argc ? argv[++i] : NULL);
         if (!value) {
-            fprintf(stderr, "trimvr %s: error: --%s needs %s\n", command, a->name, kind_expectation(a->kind));
+            tv_log(TV_LOG_ERROR, "--%s needs %s", a->name, kind_expectation(a->kind));
             return TV_ARGS_ERROR;
         }
         if (!parse_value(a, value)) {
-            fprintf(stderr, "trimvr %s: error: --%s: expected %s, got '%s'\n", command, a->name,
-                    kind_expectation(a->kind), value);
+            tv_log(TV_LOG_ERROR, "--%s: expected %s, got '%s'", a->name,
+                   kind_expectation(a->kind), value);
             return TV_ARGS_ERROR;
         }
     }
@@ -134,4 +135,11 @@ void tv_args_usage(const char* command, const char* summary, const tv_arg* args,
         printf("  %-24s %s\n", left, args[k].help);
     }
     printf("  %-24s %s\n", "--help", "show this help");
+}
+
+bool tv_arg_require(const char* name, double value, bool ok, const char* requirement)
+{
+    if (!ok)
+        tv_log(TV_LOG_ERROR, "--%s %g: must be %s", name, value, requirement);
+    return ok;
 }

@@ -32,6 +32,22 @@ typedef enum tv_args_result {
     TV_ARGS_HELP = 2   /* usage already printed   */
 } tv_args_result;
 
+/* Option rows several commands share, so that their names, value names and
+ * help read the same everywhere. */
+#define TV_ARG_METHOD(out) {"method", TV_ARG_STRING, (out), "M", "PVS method: tr, gt, sas, frompoint or q3vis (default tr)"}
+#define TV_ARG_K(out) {"k", TV_ARG_INT, (out), "N", "tr: k-buffer slots per pixel and kind, >= 1 (default 16)"}
+#define TV_ARG_PVS_RES(name, out) {(name), TV_ARG_RES, (out), "WxH", "tr: PVS resolution (default 512x512)"}
+#define TV_ARG_FOV_PVS(out) {"fov-pvs", TV_ARG_FLOAT, (out), "DEG", "PVS FOV, square frustum (default 90)"}
+#define TV_ARG_SAMPLES(out) {"samples", TV_ARG_INT, (out), "N", "views per viewcell of the sampled ground truth (default 200)"}
+
+/* The defaults those rows state. */
+#define TV_ARGS_DEFAULT_K 16
+#define TV_ARGS_DEFAULT_SAMPLES 200
+
+/* When !ok, prints the one-line error "--NAME VALUE: must be REQUIREMENT"
+ * (for example "--frames -3: must be >= 0"). Returns ok. */
+bool tv_arg_require(const char* name, double value, bool ok, const char* requirement);
+
 /* Parses argv[0..argc) (argv[0] is the first option, not the command name).
  * Prints usage for --help/-h. `summary` is the one-paragraph description. */
 tv_args_result tv_args_parse(const char* command, const char* summary, const tv_arg* args,

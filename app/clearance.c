@@ -1,6 +1,7 @@
 #include "clearance.h"
 
 #include <assert.h>
+#include <cglm/cglm.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -15,43 +16,32 @@ struct tv_clearance {
     uint32_t* tris;
 };
 
-static float dot3(const float a[3], const float b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void sub3(const float a[3], const float b[3], float out[3])
-{
-    for (int i = 0; i < 3; i++)
-        out[i] = a[i] - b[i];
-}
-
 /* Closest point by Voronoi region of the triangle (vertex, edge or face),
  * from the signs of the barycentric-like dot products; degenerate triangles
  * fall into a vertex or edge region, never divide by zero. */
-float tv_point_triangle_distance(const float p[3], const float a[3], const float b[3], const float c[3])
+float tv_point_triangle_distance(const float p_[3], const float a_[3], const float b_[3], const float c_[3])
 {
-    float ab[3], ac[3], ap[3], bp[3], cp[3], q[3];
-    sub3(b, a, ab);
-    sub3(c, a, ac);
-    sub3(p, a, ap);
-    float d1 = dot3(ab, ap), d2 = dot3(ac, ap);
-    const float* vertex = NULL;
+    /* cglm takes non-const vectors */
+    vec3 p = {p_[0], p_[1], p_[2]}, a = {a_[0], a_[1], a_[2]}, b = {b_[0], b_[1], b_[2]}, c = {c_[0], c_[1], c_[2]};
+    vec3 ab, ac, ap, bp, cp, q;
+    glm_vec3_sub(b, a, ab);
+    glm_vec3_sub(c, a, ac);
+    glm_vec3_sub(p, a, ap);
+    float d1 = glm_vec3_dot(ab, ap), d2 = glm_vec3_dot(ac, ap);
+    float* vertex = NULL;
     float s = 0.0f, t = 0.0f; /* q = a + s ab + t ac */
     if (d1 <= 0.0f && d2 <= 0.0f)
         vertex = a;
-    sub3(p, b, bp);
-    float d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+    glm_vec3_sub(p, b, bp);
+    float d3 = glm_vec3_dot(ab, bp), d4 = glm_vec3_dot(ac, bp);
     if (!vertex && d3 >= 0.0f && d4 <= d3)
         vertex = b;
-    sub3(p, c, cp);
-    float d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+    glm_vec3_sub(p, c, cp);
+    float d5 = glm_vec3_dot(ab, cp), d6 = glm_vec3_dot(ac, cp);
     if (!vertex && d6 >= 0.0f && d5 <= d6)
         vertex = c;
-    if (vertex) {
-        sub3(p, vertex, q);
-        return sqrtf(dot3(q, q));
-    }
+    if (vertex)
+        return glm_vec3_distance(p, vertex);
     float vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
     if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) {
         s = d1 / (d1 - d3); /* edge ab */
@@ -66,9 +56,10 @@ float tv_point_triangle_distance(const float p[3], const float a[3], const float
         s = vb / denom;
         t = vc / denom;
     }
-    for (int i = 0; i < 3; i++)
-        q[i] = p[i] - (a[i] + s * ab[i] + t * ac[i]);
-    return sqrtf(dot3(q, q));
+    glm_vec3_copy(a, q);
+    glm_vec3_muladds(ab, s, q);
+    glm_vec3_muladds(ac, t, q);
+    return glm_vec3_distance(p, q);
 }
 
 static const float* vertex_of(const scn_scene* s, uint32_t tri, int k)

@@ -5,10 +5,11 @@
 #include "app_scene.h"
 #include "args.h"
 #include "cli_viewcell.h"
+#include "interrupt.h"
 #include "commands.h"
 #include "eval_common.h"
 #include "eval_images.h"
-#include "fs.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -23,17 +24,18 @@ typedef struct eval_opts {
     unsigned res[2], pvs_res[2];
 } eval_opts;
 
-static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval_cell* cells, int n)
+static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval_cell* cells, int n, bool interrupted)
 {
     char name[4200];
     snprintf(name, sizeof name, "%s/eval.json", o->out);
     FILE* f = fopen(name, "w");
     if (!f) {
-        fprintf(stderr, "trimvr eval: error: %s: cannot write\n", name);
+        tv_log(TV_LOG_ERROR, "%s: cannot write", name);
         return false;
     }
     tv_eval_cell mean = tv_eval_mean(cells, n);
-    fprintf(f, "{\n  \"scene\": \"%s\", \"method\": \"%s\", \"viewcell_count\": %d,\n", scene_name, o->method, n);
+    fprintf(f, "{\n  \"scene\": \"%s\", \"method\": \"%s\", \"viewcell_count\": %d, \"interrupted\": %s,\n",
+            scene_name, o->method, n, interrupted ? "true" : "false");
     fprintf(f, "  \"delta_m\": %.4f, \"fov_deg\": %.2f, \"fov_pvs_deg\": %.2f, \"samples\": %d,\n", o->delta, o->fov,
             o->fov_pvs, cells[0].m.samples);
     fprintf(f, "  \"sample_res\": [%u, %u], \"pvs_res\": [%u, %u],\n", o->res[0], o->res[1], o->pvs_res[0],
@@ -49,7 +51,7 @@ static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval
     }
     fprintf(f, "  ]\n}\n");
     if (fclose(f) != 0) {
-        fprintf(stderr, "trimvr eval: error: %s: write failed\n", name);
+        tv_log(TV_LOG_ERROR, "%s: write failed", name);
         return false;
     }
     return true;
@@ -62,7 +64,7 @@ static int make_cells(const eval_opts* o, tv_eval_cell** out, char* scene_spec, 
     if (!o->path) {
         *out = calloc(1, sizeof **out);
         if (!*out || !tv_viewcell_make(o->pos, o->dir, o->delta, o->fov, o->fov_pvs, &(*out)->vc)) {
-            fprintf(stderr, "trimvr eval: error: --dir must be non-zero and FOVs in (0, 180)\n");
+            tv_log(TV_LOG_ERROR, "--dir must be non-zero and FOVs in (0, 180)");
             return -1;
         }
         return 1;
@@ -71,48 +73,129 @@ static int make_cells(const eval_opts* o, tv_eval_cell** out, char* scene_spec, 
     int n = tv_eval_path_cells(o->path, o->every, o->max_cells, o->delta, o->fov, o->fov_pvs, out, scene_spec,
                                spec_size, err, sizeof err);
     if (n < 0)
-        fprintf(stderr, "trimvr eval: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
     return n;
 }
 
-int tv_cmd_eval(int argc, char** argv)
+static tv_args_result parse(eval_opts* o, int argc, char** argv)
 {
-    eval_opts o = {.out = "out/eval", .method = "tr", .pos = {NAN, NAN, NAN}, .dir = {0, 0, -1}, .delta = 0.1f,
-                   .fov = 60.0f, .fov_pvs = 90.0f, .every = 90, .samples = 200, .res = {640, 360},
-                   .pvs_res = {512, 512}};
     const tv_arg args[] = {
-        {"scene", TV_ARG_STRING, &o.scene, "S", "scene (default: the path's '# scene:')"},
-        {"pos", TV_ARG_VEC3, o.pos, "X,Y,Z", "one viewcell at this centre (or use --path)"},
-        {"dir", TV_ARG_VEC3, o.dir, "X,Y,Z", "its view direction (default 0,0,-1)"},
-        {"path", TV_ARG_STRING, &o.path, "FILE", "viewcells at the head poses of this path"},
-        {"every", TV_ARG_INT, &o.every, "N", "with --path: one viewcell every N display frames at 90 Hz (default 90)"},
-        {"max-cells", TV_ARG_INT, &o.max_cells, "N", "with --path: at most N viewcells (default all)"},
-        {"delta", TV_ARG_FLOAT, &o.delta, "M", "viewcell radius (default 0.1)"},
-        {"fov", TV_ARG_FLOAT, &o.fov, "DEG", "display FOV, horizontal (default 60)"},
-        {"fov-pvs", TV_ARG_FLOAT, &o.fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
-        {"samples", TV_ARG_INT, &o.samples, "N", "ground-truth views per viewcell (default 200)"},
-        {"res", TV_ARG_RES, o.res, "WxH", "sample-view resolution (default 640x360)"},
-        {"pvs-res", TV_ARG_RES, o.pvs_res, "WxH", "tr: PVS resolution (default 512x512)"},
-        {"k", TV_ARG_INT, &o.k, "N", "tr: k-buffer slots per pixel and kind (default 16)"},
-        {"method", TV_ARG_STRING, &o.method, "M", "tr, gt, sas, frompoint or q3vis (default tr)"},
-        {"out", TV_ARG_STRING, &o.out, "DIR", "output folder (default out/eval)"},
+        {"scene", TV_ARG_STRING, &o->scene, "S", "scene (default: the path's '# scene:')"},
+        {"pos", TV_ARG_VEC3, o->pos, "X,Y,Z", "one viewcell at this centre (or use --path)"},
+        {"dir", TV_ARG_VEC3, o->dir, "X,Y,Z", "its view direction (default 0,0,-1)"},
+        {"path", TV_ARG_STRING, &o->path, "FILE", "viewcells at the head poses of this path"},
+        {"every", TV_ARG_INT, &o->every, "N", "with --path: one viewcell every N display frames at 90 Hz (default 90)"},
+        {"max-cells", TV_ARG_INT, &o->max_cells, "N", "with --path: at most N viewcells (default all)"},
+        {"delta", TV_ARG_FLOAT, &o->delta, "M", "viewcell radius (default 0.1; tr: at most 31.7 m x tan(fov-pvs / 2))"},
+        {"fov", TV_ARG_FLOAT, &o->fov, "DEG", "display FOV, horizontal (default 60)"},
+        TV_ARG_FOV_PVS(&o->fov_pvs),
+        TV_ARG_SAMPLES(&o->samples),
+        {"res", TV_ARG_RES, o->res, "WxH", "sample-view resolution (default 640x360)"},
+        TV_ARG_PVS_RES("pvs-res", o->pvs_res),
+        TV_ARG_K(&o->k),
+        TV_ARG_METHOD(&o->method),
+        {"out", TV_ARG_STRING, &o->out, "DIR", "output folder (default out/eval)"},
     };
     const char* summary =
         "Measures a PVS method against sampled ground truth (the paper's section 6): PVS and GT size, FP and\n"
         "FN rates, false-negative pixels per view (FNG), PSNR of PVS renders against full renders, timings.\n"
         "Writes DIR/eval.json, DIR/fig1_overview.png and DIR/fig1_eye.png (visible shaded, false positives\n"
-        "blue, rest grey) and DIR/fn_worst.png (false-negative pixels red in the worst view).";
-    tv_args_result r = tv_args_parse("eval", summary, args, (int)(sizeof args / sizeof args[0]), argc, argv);
+        "blue, rest grey) and DIR/fn_worst.png (false-negative pixels red in the worst view). Ctrl-C stops\n"
+        "after the current viewcell; eval.json then covers the finished ones.";
+    return tv_args_parse("eval", summary, args, (int)(sizeof args / sizeof args[0]), argc, argv);
+}
+
+static bool validate(const eval_opts* o, pvs_method_desc* md)
+{
+    *md = (pvs_method_desc){.tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k},
+                            .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples};
+    if (!tv_arg_require("k", o->k, o->k >= 1, ">= 1"))
+        return false;
+    if ((!o->path && isnan(o->pos[0])) || o->every < 1 || o->samples < 1 || !(o->delta >= 0.0f) ||
+        !pvs_method_from_name(o->method, &md->kind)) {
+        tv_log(TV_LOG_ERROR, "need --pos or --path, a known --method, --every >= 1, "
+               "--samples >= 1 and --delta >= 0 (see trimvr eval --help)");
+        return false;
+    }
+    return true;
+}
+
+static void print_cell(int i, int n, const pvs_eval_result* m)
+{
+    fprintf(stderr,
+            "viewcell %d/%d: PVS %u (%.2f%%), GT %u (%.0f%% complete), FP %.2f, FN %.4f, FNG %.1f px, "
+            "PSNR min %.1f dB\n",
+            i + 1, n, m->pvs_tris, 100.0 * m->pvs_fraction, m->gt_tris, 100.0 * m->gt_completeness, m->fp_rate,
+            m->fn_rate, m->fng_pixels_mean, m->psnr_min_db);
+}
+
+/* Evaluates the cells in turn (a signal stops the run between two) and
+ * writes eval.json and the pictures. Returns the exit status. */
+static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, const char* spec,
+               tv_eval_cell* cells, int n)
+{
+    char err[512] = "";
+    int status = 0;
+    uint32_t tris = s->scene.triangle_count;
+    pvs_method* m = pvs_method_create(md, s->ctx, &s->scene, s->gpu, err, sizeof err);
+    uint8_t* mask = calloc(tris ? tris : 1, 1);
+    uint8_t* gt = calloc(tris ? tris : 1, 1);
+    tv_eval_images worst = {0};
+    pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1]};
+    if (!m || !mask || !gt) {
+        tv_log(TV_LOG_ERROR, "%s", m ? "out of memory" : err);
+        status = 1;
+    }
+    tv_interrupt_install();
+    int done = 0;
+    for (; done < n && status == 0 && !tv_interrupted(); done++) {
+        if (!tv_eval_cell_run(m, s->ctx, &s->scene, s->gpu, &ed, o->fov, &cells[done], mask, gt, err, sizeof err)) {
+            tv_log(TV_LOG_ERROR, "viewcell %d: %s", done, err);
+            status = 1;
+        } else if (!tv_eval_images_keep_worst(&worst, &cells[done].vc, &cells[done].m, mask, gt, tris)) {
+            tv_log(TV_LOG_ERROR, "out of memory");
+            status = 1;
+        } else {
+            print_cell(done, n, &cells[done].m);
+        }
+    }
+    int sig = tv_interrupted();
+    if (status == 0 && done == 0) {
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d before the first viewcell finished", sig);
+        status = tv_interrupt_status(sig);
+    }
+    err[0] = '\0';
+    if (status == 0 && (!write_json(o, spec, cells, done, sig != 0) ||
+                        !tv_eval_images_write(&worst, s->ctx, s->gpu, &s->scene, &ed, o->out, err, sizeof err))) {
+        if (err[0])
+            tv_log(TV_LOG_ERROR, "%s", err);
+        status = 1;
+    }
+    if (status == 0 && sig) {
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d after %d of %d viewcell(s): %s/eval.json covers them", sig,
+               done, n, o->out);
+        status = tv_interrupt_status(sig);
+    } else if (status == 0) {
+        printf("trimvr eval: %d viewcell(s) of %s with %s -> %s/eval.json\n", n, spec, o->method, o->out);
+    }
+    tv_eval_images_free(&worst);
+    free(mask);
+    free(gt);
+    pvs_method_destroy(m);
+    return status;
+}
+
+int tv_cmd_eval(int argc, char** argv)
+{
+    eval_opts o = {.out = "out/eval", .method = "tr", .pos = {NAN, NAN, NAN}, .dir = {0, 0, -1}, .delta = 0.1f,
+                   .fov = 60.0f, .fov_pvs = 90.0f, .every = 90, .samples = TV_ARGS_DEFAULT_SAMPLES, .res = {640, 360},
+                   .pvs_res = {512, 512}, .k = TV_ARGS_DEFAULT_K};
+    tv_args_result r = parse(&o, argc, argv);
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;
-    pvs_method_desc md = {.tr = {.width = o.pvs_res[0], .height = o.pvs_res[1], .k = (uint32_t)o.k},
-                          .width = o.res[0], .height = o.res[1], .gt_samples = (uint32_t)o.samples};
-    if ((!o.path && isnan(o.pos[0])) || o.every < 1 || o.samples < 1 || o.k < 0 || !(o.delta >= 0.0f) ||
-        !pvs_method_from_name(o.method, &md.kind)) {
-        fprintf(stderr, "trimvr eval: error: need --pos or --path, a known --method, --every >= 1, "
-                        "--samples >= 1 and --delta >= 0 (see trimvr eval --help)\n");
+    pvs_method_desc md;
+    if (!validate(&o, &md))
         return 2;
-    }
     char spec[512] = "";
     if (o.scene)
         snprintf(spec, sizeof spec, "%s", o.scene);
@@ -120,57 +203,19 @@ int tv_cmd_eval(int argc, char** argv)
     int n = make_cells(&o, &cells, spec, sizeof spec);
     if (n < 0)
         return 1;
-    if (!spec[0] || !tv_mkdirs(o.out)) {
-        fprintf(stderr, "trimvr eval: error: %s\n", spec[0] ? "cannot create the output folder" : "no scene: pass --scene");
+    if (!spec[0]) {
+        tv_log(TV_LOG_ERROR, "no scene: pass --scene");
         free(cells);
-        return spec[0] ? 1 : 2;
+        return 2;
     }
     tv_app_scene s;
-    if (!tv_app_scene_open("eval", spec, &s)) {
+    if (!tv_app_scene_open_out(spec, o.out, &s)) {
         free(cells);
         return 1;
     }
-    char err[512];
-    int status = 0;
-    uint32_t tris = s.scene.triangle_count;
-    pvs_method* m = pvs_method_create(&md, s.ctx, &s.scene, s.gpu, err, sizeof err);
-    uint8_t* mask = calloc(tris ? tris : 1, 1);
-    uint8_t* gt = calloc(tris ? tris : 1, 1);
-    tv_eval_images worst = {0};
-    pvs_eval_desc ed = {.samples = (uint32_t)o.samples, .width = o.res[0], .height = o.res[1]};
-    if (!m || !mask || !gt) {
-        fprintf(stderr, "trimvr eval: error: %s\n", m ? "out of memory" : err);
-        status = 1;
-    }
-    for (int i = 0; i < n && status == 0; i++) {
-        if (!tv_eval_cell_run(m, &s, &ed, o.fov, &cells[i], mask, gt, err, sizeof err)) {
-            fprintf(stderr, "trimvr eval: error: viewcell %d: %s\n", i, err);
-            status = 1;
-        } else if (!tv_eval_images_keep_worst(&worst, &cells[i].vc, &cells[i].m, mask, gt, tris)) {
-            fprintf(stderr, "trimvr eval: error: out of memory\n");
-            status = 1;
-        }
-        fprintf(stderr,
-                "viewcell %d/%d: PVS %u (%.2f%%), GT %u (%.0f%% complete), FP %.2f, FN %.4f, FNG %.1f px, "
-                "PSNR min %.1f dB\n",
-                i + 1, n, cells[i].m.pvs_tris, 100.0 * cells[i].m.pvs_fraction, cells[i].m.gt_tris,
-                100.0 * cells[i].m.gt_completeness,
-                cells[i].m.fp_rate, cells[i].m.fn_rate, cells[i].m.fng_pixels_mean, cells[i].m.psnr_min_db);
-    }
-    if (status == 0 && (!write_json(&o, spec, cells, n) ||
-                        !tv_eval_images_write(&worst, s.ctx, s.gpu, &s.scene, &ed, o.out, err, sizeof err))) {
-        if (err[0])
-            fprintf(stderr, "trimvr eval: error: %s\n", err);
-        status = 1;
-    }
-    if (status == 0)
-        printf("trimvr eval: %d viewcell(s) of %s with %s -> %s/eval.json\n", n, spec, o.method, o.out);
-    tv_eval_images_free(&worst);
-    free(mask);
-    free(gt);
+    int status = run(&o, &md, &s, spec, cells, n);
     free(cells);
-    pvs_method_destroy(m);
-    if (!tv_app_scene_close("eval", &s))
+    if (!tv_app_scene_close(&s))
         status = 1;
     return status;
 }

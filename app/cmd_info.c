@@ -5,8 +5,9 @@
 #include "args.h"
 #include "clock.h"
 #include "commands.h"
-#include "eval_common.h"
+#include "auto_place.h"
 #include "weld.h"
+#include "log.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,7 +20,7 @@ static bool print_edge_classes(const scn_scene* sc)
     if (!remap || !adj) {
         free(remap);
         free(adj);
-        fprintf(stderr, "trimvr info: error: out of memory\n");
+        tv_log(TV_LOG_ERROR, "out of memory");
         return false;
     }
     double t0 = tv_now_ms();
@@ -43,22 +44,23 @@ static bool print_edge_classes(const scn_scene* sc)
     return true;
 }
 
+/* The viewcells trimvr bench places in a scene without a bundled walk
+ * (app/auto_place.h), then the same as one --pos list to reuse. */
 static bool print_floor_points(const char* spec, const scn_scene* sc, int max_points)
 {
-    if (strncmp(spec, "oa:", 3) != 0) {
-        fprintf(stderr, "trimvr info: error: --floor-points needs an OpenArena level (oa:LEVEL), got %s\n", spec);
-        return false;
-    }
-    char json[4200], err[512];
-    tv_eval_pvs_json_of(spec, json, sizeof json);
+    char err[512];
+    const char* rule = "";
     float* pos = malloc((size_t)max_points * 3 * sizeof *pos);
     float* dir = malloc((size_t)max_points * 3 * sizeof *dir);
-    int n = pos && dir ? tv_eval_floor_points(sc, json, max_points, pos, dir, err, sizeof err) : -1;
+    int n = pos && dir ? tv_auto_viewcells(spec, sc, max_points, pos, dir, &rule, err, sizeof err) : -1;
     if (n < 0)
-        fprintf(stderr, "trimvr info: error: %s\n", pos && dir ? err : "out of memory for floor points");
+        tv_log(TV_LOG_ERROR, "%s", pos && dir ? err : "out of memory for floor points");
     for (int i = 0; i < n; i++)
-        printf("floor point %-4d  eye %.4f,%.4f,%.4f  facing %.4f,%.4f,%.4f\n", i, pos[3 * i], pos[3 * i + 1],
-               pos[3 * i + 2], dir[3 * i], dir[3 * i + 1], dir[3 * i + 2]);
+        printf("floor point %-4d  eye %.4f,%.4f,%.4f  facing %.4f,%.4f,%.4f  (%s)\n", i, pos[3 * i], pos[3 * i + 1],
+               pos[3 * i + 2], dir[3 * i], dir[3 * i + 1], dir[3 * i + 2], rule);
+    for (int i = 0; i < n; i++)
+        printf("%s%.2f,%.2f,%.2f%s", i ? ";" : "--pos '", pos[3 * i], pos[3 * i + 1], pos[3 * i + 2],
+               i + 1 < n ? "" : "'\n");
     free(pos);
     free(dir);
     return n >= 0;
@@ -73,30 +75,30 @@ int tv_cmd_info(int argc, char** argv)
         {"scene", TV_ARG_STRING, &spec, "S", "scene: .gltf/.glb, builtin:NAME, sponza or oa:LEVEL (required)"},
         {"edges", TV_ARG_FLAG, &edges, NULL, "also weld vertices and classify triangle edges"},
         {"floor-points", TV_ARG_INT, &floor_points, "N",
-         "oa: levels: print up to N eye positions 1.4 m above open floor (trimvr bench's viewcells; anchors for "
-         "placing traces)"},
+         "print up to N eye positions above open floor, trimvr bench's viewcells (oa: levels: 1.4 m, by their "
+         "vis data; other scenes: the automatic rule of docs/scenes.md) and a --pos list"},
     };
     tv_args_result r = tv_args_parse("info", "Loads a scene (no GPU needed) and prints its statistics.", args,
                                      (int)(sizeof args / sizeof args[0]), argc, argv);
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;
     if (!spec) {
-        fprintf(stderr, "trimvr info: error: --scene is required (see trimvr info --help)\n");
+        tv_log(TV_LOG_ERROR, "--scene is required (see trimvr info --help)");
         return 2;
     }
     if (floor_points < 0) {
-        fprintf(stderr, "trimvr info: error: --floor-points: expected a count >= 0, got %d\n", floor_points);
+        tv_log(TV_LOG_ERROR, "--floor-points: expected a count >= 0, got %d", floor_points);
         return 2;
     }
     char resolved[4096], err[512];
     if (!tv_resolve_scene_spec(spec, resolved, sizeof resolved)) {
-        fprintf(stderr, "trimvr info: error: scene name too long: %s\n", spec);
+        tv_log(TV_LOG_ERROR, "scene name too long: %s", spec);
         return 2;
     }
     scn_scene sc;
     double t0 = tv_now_ms();
     if (!scn_load(resolved, &sc, err, sizeof err)) {
-        fprintf(stderr, "trimvr info: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return 1;
     }
     double ms = tv_now_ms() - t0;

@@ -10,6 +10,7 @@
  * clearance.h. */
 #include "app_scene.h"
 #include "args.h"
+#include "auto_place.h"
 #include "clearance.h"
 #include "commands.h"
 #include "fs.h"
@@ -17,6 +18,7 @@
 #include "path_stats.h"
 #include "trace_import.h"
 #include "trace_place.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -47,7 +49,8 @@ static bool placement_from_opts(const import_opts* o, pred_placement* pl)
 
 static int path_import(int argc, char** argv)
 {
-    import_opts o = {.anchor = {NAN, NAN, NAN}, .heading = NAN, .eye_height = NAN, .height_offset = NAN};
+    import_opts o = {.anchor = {NAN, NAN, NAN}, .heading = NAN, .eye_height = NAN, .height_offset = NAN,
+                     .resample = NAN};
     const tv_arg args[] = {
         {"in", TV_ARG_STRING, &o.in, "FILE", "recorded trace CSV (required)"},
         {"out", TV_ARG_STRING, &o.out, "FILE", "path CSV to write (required)"},
@@ -70,43 +73,44 @@ static int path_import(int argc, char** argv)
         return r == TV_ARGS_HELP ? 0 : 2;
     pred_trace_desc desc = {.gap_s = o.gap};
     if (!o.in || !o.out) {
-        fprintf(stderr, "trimvr path import: error: --in and --out are required (see trimvr path import --help)\n");
+        tv_log(TV_LOG_ERROR, "--in and --out are required (see trimvr path import --help)");
         return 2;
     }
     if (o.format && !pred_trace_format_from_name(o.format, &desc.format)) {
-        fprintf(stderr, "trimvr path import: error: --format: unknown format '%s' (auto, hololens, optitrack, quest)\n",
-                o.format);
+        tv_log(TV_LOG_ERROR, "--format: unknown format '%s' (auto, hololens, optitrack, quest)",
+               o.format);
         return 2;
     }
     if (o.ref && strcmp(o.ref, "start") != 0 && strcmp(o.ref, "centroid") != 0) {
-        fprintf(stderr, "trimvr path import: error: --ref: expected start or centroid, got '%s'\n", o.ref);
+        tv_log(TV_LOG_ERROR, "--ref: expected start or centroid, got '%s'", o.ref);
         return 2;
     }
-    if (o.resample < 0.0f || o.gap < 0.0f || (!isnan(o.eye_height) && !(o.eye_height > 0.0f))) {
-        fprintf(stderr, "trimvr path import: error: --resample, --gap >= 0 and --eye-height > 0 are required\n");
+    /* NAN: not given, keep the recorded samples; 0 Hz is no rate at all */
+    if ((!isnan(o.resample) && !tv_arg_require("resample", o.resample, o.resample > 0.0f, "> 0 Hz")) ||
+        !tv_arg_require("gap", o.gap, o.gap >= 0.0f, ">= 0 s") ||
+        (!isnan(o.eye_height) && !tv_arg_require("eye-height", o.eye_height, o.eye_height > 0.0f, "> 0 m")))
         return 2;
-    }
     char err[512];
     pred_path path;
     pred_trace_report rep;
     if (!pred_trace_import(o.in, &desc, &path, &rep, err, sizeof err)) {
-        fprintf(stderr, "trimvr path import: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return 1;
     }
     pred_placement pl;
     char comment[1024], placement[256] = "placement: none (the recording's origin and heading)";
     if (placement_from_opts(&o, &pl)) {
         if (!pred_trace_place(&path, &pl)) {
-            fprintf(stderr, "trimvr path import: error: out of memory\n");
+            tv_log(TV_LOG_ERROR, "out of memory");
             pred_path_free(&path);
             return 1;
         }
         pred_placement_format(&pl, placement, sizeof placement);
     }
-    if (o.resample > 0.0f) {
+    if (!isnan(o.resample)) {
         pred_path resampled;
         if (!pred_path_resample(&path, o.resample, &resampled, err, sizeof err)) {
-            fprintf(stderr, "trimvr path import: error: %s\n", err);
+            tv_log(TV_LOG_ERROR, "%s", err);
             pred_path_free(&path);
             return 1;
         }
@@ -120,7 +124,7 @@ static int path_import(int argc, char** argv)
              "%s\nresampled: %s",
              o.in, pred_trace_format_name(rep.format), rep.rows, rep.dropped, rep.gaps,
              desc.gap_s > 0.0 ? desc.gap_s : 0.1, rep.max_gap_s * 1e3, placement,
-             o.resample > 0.0f ? "uniformly (see the sample times)" : "no (recorded sample times)");
+             !isnan(o.resample) ? "uniformly (see the sample times)" : "no (recorded sample times)");
     char dir[4096];
     snprintf(dir, sizeof dir, "%s", o.out);
     char* slash = strrchr(dir, '/');
@@ -140,41 +144,76 @@ static int path_import(int argc, char** argv)
                pred_path_duration(&path));
     }
     else
-        fprintf(stderr, "trimvr path import: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
     pred_path_free(&path);
+    return ok ? 0 : 1;
+}
+
+/* path synth --scene: an automatic path through the scene's free space into one file. */
+static int path_synth_scene(const char* spec, const char* kind_name, int seed, const char* out)
+{
+    tv_auto_path_kind kind;
+    if (!tv_auto_path_kind_from_name(kind_name, &kind)) {
+        tv_log(TV_LOG_ERROR, "--kind: expected walk, run or lookaround, got '%s'", kind_name);
+        return 2;
+    }
+    char err[512] = "scene name too long", file[4096];
+    scn_scene scene;
+    if (!tv_resolve_scene_spec(spec, file, sizeof file) || !scn_load(file, &scene, err, sizeof err)) {
+        tv_log(TV_LOG_ERROR, "%s", err);
+        return 1;
+    }
+    pred_path path = {0};
+    bool ok = tv_auto_path(spec, &scene, kind, (uint64_t)seed, &path, err, sizeof err) &&
+              pred_path_save(&path, out, "generated by: trimvr path synth (automatic, docs/scenes.md)", err, sizeof err);
+    if (ok)
+        printf("trimvr path synth: %s: %s, %zu samples over %.2f s -> %s\n", spec, path.description, path.count,
+               pred_path_duration(&path), out);
+    else
+        tv_log(TV_LOG_ERROR, "%s", err);
+    pred_path_free(&path);
+    scn_scene_free(&scene);
     return ok ? 0 : 1;
 }
 
 static int path_synth(int argc, char** argv)
 {
-    const char* out = NULL;
+    const char *out = NULL, *scene = NULL, *kind = "walk";
     bool list = false;
+    int seed = 1;
     const tv_arg args[] = {
         {"list", TV_ARG_FLAG, &list, NULL, "print the bundled paths' recipes as CSV"},
-        {"out", TV_ARG_STRING, &out, "DIR", "synthesise every bundled path into DIR (created)"},
+        {"out", TV_ARG_STRING, &out, "DIR|FILE", "synthesise every bundled path into DIR (created); with --scene: the file"},
+        {"scene", TV_ARG_STRING, &scene, "S", "a path through S's walkable free space instead (docs/scenes.md)"},
+        {"kind", TV_ARG_STRING, &kind, "K", "with --scene: walk (1.4 m/s), run (3 m/s) or lookaround (default walk)"},
+        {"seed", TV_ARG_INT, &seed, "N", "with --scene: head-motion seed (default 1)"},
     };
-    tv_args_result r = tv_args_parse("path synth", "Writes or lists the bundled synthetic paths (paths/).", args,
-                                     ARG_COUNT(args), argc, argv);
+    tv_args_result r = tv_args_parse("path synth",
+                                     "Writes or lists the bundled synthetic paths (paths/), or synthesises a walk, run\n"
+                                     "or look-around through any scene's free space (--scene S --out FILE).",
+                                     args, ARG_COUNT(args), argc, argv);
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;
-    if (list == (out != NULL)) {
-        fprintf(stderr, "trimvr path synth: error: give exactly one of --list and --out\n");
+    if (list == (out != NULL) || (scene && list)) {
+        tv_log(TV_LOG_ERROR, "give exactly one of --list and --out (--scene needs --out)");
         return 2;
     }
+    if (scene)
+        return path_synth_scene(scene, kind, seed, out);
     char err[512];
     if (list) {
         if (pred_bundled_path_print_list(stdout, err, sizeof err))
             return 0;
-        fprintf(stderr, "trimvr path synth: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return 1;
     }
     if (!tv_mkdirs(out)) {
-        fprintf(stderr, "trimvr path synth: error: %s: cannot create the output folder\n", out);
+        tv_log(TV_LOG_ERROR, "%s: cannot create the output folder", out);
         return 1;
     }
     for (int i = 0; i < pred_bundled_path_count(); i++)
         if (!pred_bundled_path_write(i, out, err, sizeof err)) {
-            fprintf(stderr, "trimvr path synth: error: %s\n", err);
+            tv_log(TV_LOG_ERROR, "%s", err);
             return 1;
         }
     printf("trimvr path synth: %d paths written to %s\n", pred_bundled_path_count(), out);
@@ -189,13 +228,13 @@ static int path_info(int argc, char** argv)
         return 0;
     }
     if (argc != 1) {
-        fprintf(stderr, "trimvr path info: error: expected one path file (see trimvr path info --help)\n");
+        tv_log(TV_LOG_ERROR, "expected one path file (see trimvr path info --help)");
         return 2;
     }
     char err[512];
     pred_path path;
     if (!pred_path_load(argv[0], &path, err, sizeof err)) {
-        fprintf(stderr, "trimvr path info: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return 1;
     }
     pred_path_stats st;
@@ -210,7 +249,7 @@ static int path_info(int argc, char** argv)
                st.ang_speed_p99);
         printf("gaze              mean |forward y| %.3f (0 = level)\n", st.forward_y_mean_abs);
     } else {
-        fprintf(stderr, "trimvr path info: error: %s: %s\n", argv[0], err);
+        tv_log(TV_LOG_ERROR, "%s: %s", argv[0], err);
     }
     pred_path_free(&path);
     return ok ? 0 : 1;
@@ -234,30 +273,30 @@ static int path_check(int argc, char** argv)
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;
     if (!file || !(near > 0.0f) || !(radius >= near)) {
-        fprintf(stderr, "trimvr path check: error: --path is required, and 0 < --near <= --radius\n");
+        tv_log(TV_LOG_ERROR, "--path is required, and 0 < --near <= --radius");
         return 2;
     }
     char err[512], spec[4096];
     pred_path path;
     if (!pred_path_load(file, &path, err, sizeof err)) {
-        fprintf(stderr, "trimvr path check: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return 1;
     }
     if (!scene_spec && !path.scene[0]) {
-        fprintf(stderr, "trimvr path check: error: %s names no scene: give --scene\n", file);
+        tv_log(TV_LOG_ERROR, "%s names no scene: give --scene", file);
         pred_path_free(&path);
         return 2;
     }
     scn_scene scene;
     if (!tv_resolve_scene_spec(scene_spec ? scene_spec : path.scene, spec, sizeof spec) ||
         !scn_load(spec, &scene, err, sizeof err)) {
-        fprintf(stderr, "trimvr path check: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         pred_path_free(&path);
         return 1;
     }
     tv_clearance* cl = tv_clearance_create(&scene, &(tv_clearance_desc){.radius_m = radius}, err, sizeof err);
     if (!cl) {
-        fprintf(stderr, "trimvr path check: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         scn_scene_free(&scene);
         pred_path_free(&path);
         return 1;
@@ -289,8 +328,8 @@ static int path_check(int argc, char** argv)
            path.count ? 100.0 * (double)close_count / (double)path.count : 0.0);
     bool ok = !(min_required >= 0.0f && dmin < min_required);
     if (!ok)
-        fprintf(stderr, "trimvr path check: error: %s: the head comes within %.3f m of %s (--min %.3f)\n", file,
-                dmin, spec, min_required);
+        tv_log(TV_LOG_ERROR, "%s: the head comes within %.3f m of %s (--min %.3f)", file,
+               dmin, spec, min_required);
     tv_clearance_destroy(cl);
     scn_scene_free(&scene);
     pred_path_free(&path);
@@ -311,11 +350,15 @@ int tv_cmd_path(int argc, char** argv)
     };
     if (argc >= 1)
         for (int i = 0; i < ARG_COUNT(verbs); i++)
-            if (strcmp(argv[0], verbs[i].name) == 0)
+            if (strcmp(argv[0], verbs[i].name) == 0) {
+                char program[64];
+                snprintf(program, sizeof program, "trimvr path %s", verbs[i].name);
+                tv_log_set_program(program);
                 return verbs[i].run(argc - 1, argv + 1);
+            }
     bool help = argc >= 1 && (strcmp(argv[0], "--help") == 0 || strcmp(argv[0], "-h") == 0);
     if (!help && argc >= 1)
-        fprintf(stderr, "trimvr path: error: unknown verb '%s'\n", argv[0]);
+        tv_log(TV_LOG_ERROR, "unknown verb '%s'", argv[0]);
     FILE* f = help ? stdout : stderr;
     fprintf(f, "usage: trimvr path <verb> [options]\n\nverbs:\n");
     for (int i = 0; i < ARG_COUNT(verbs); i++)

@@ -4,6 +4,7 @@
 #include "args.h"
 #include "commands.h"
 #include "eval.h"
+#include "log.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -65,7 +66,7 @@ static bool take_paths(int argc, char** argv, eval_opts* o, int* rest_argc, char
         const char* value = NULL;
         if (strcmp(argv[i], "--path") == 0) {
             if (i + 1 == argc) {
-                fprintf(stderr, "trimvr predict-eval: error: --path needs a FILE\n");
+                tv_log(TV_LOG_ERROR, "--path needs a FILE");
                 return false;
             }
             value = argv[++i];
@@ -76,7 +77,7 @@ static bool take_paths(int argc, char** argv, eval_opts* o, int* rest_argc, char
             continue;
         }
         if (o->path_count == MAX_PATHS) {
-            fprintf(stderr, "trimvr predict-eval: error: more than %d --path options\n", MAX_PATHS);
+            tv_log(TV_LOG_ERROR, "more than %d --path options", MAX_PATHS);
             return false;
         }
         o->paths[o->path_count++] = value;
@@ -89,7 +90,7 @@ static int eval_path(const char* file, const pred_eval_desc* base, int kind_firs
     char err[512];
     pred_path path;
     if (!pred_path_load(file, &path, err, sizeof err)) {
-        fprintf(stderr, "trimvr predict-eval: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return 1;
     }
     const char* name = strrchr(file, '/') ? strrchr(file, '/') + 1 : file;
@@ -102,7 +103,7 @@ static int eval_path(const char* file, const pred_eval_desc* base, int kind_firs
         if (pred_eval_run(&desc, &r, err, sizeof err)) {
             pred_eval_print_rows(stdout, name, (pred_kind)k, &r);
         } else {
-            fprintf(stderr, "trimvr predict-eval: error: %s: %s\n", file, err);
+            tv_log(TV_LOG_ERROR, "%s: %s", file, err);
             status = 1;
         }
     }
@@ -126,7 +127,7 @@ int tv_cmd_predict_eval(int argc, char** argv)
         "rotation error p50/p99 per horizon as a markdown table (docs/prediction.md).";
     char** rest = malloc(sizeof(char*) * (size_t)(argc ? argc : 1));
     if (!rest) {
-        fprintf(stderr, "trimvr predict-eval: error: out of memory\n");
+        tv_log(TV_LOG_ERROR, "out of memory");
         return 1;
     }
     int rest_argc = 0;
@@ -142,23 +143,23 @@ int tv_cmd_predict_eval(int argc, char** argv)
     pred_kind kind;
     if (strcmp(o.predictor, "all") != 0) {
         if (!pred_kind_from_name(o.predictor, &kind)) {
-            fprintf(stderr, "trimvr predict-eval: error: --predictor: expected cv, ca, kalman or all, got '%s'\n",
-                    o.predictor);
+            tv_log(TV_LOG_ERROR, "--predictor: expected cv, ca, kalman or all, got '%s'",
+                   o.predictor);
             return 2;
         }
         kind_first = kind_last = (int)kind;
     }
     if (!parse_horizons(o.horizons, &desc.horizons)) {
-        fprintf(stderr, "trimvr predict-eval: error: --horizons: expected up to %d increasing values in (0, 10000] "
-                        "ms, got '%s'\n", PRED_MAX_HORIZONS, o.horizons);
+        tv_log(TV_LOG_ERROR, "--horizons: expected up to %d increasing values in (0, 10000] "
+               "ms, got '%s'", PRED_MAX_HORIZONS, o.horizons);
         return 2;
     }
     if (!parse_noise(o.noise, &desc.hmd)) {
-        fprintf(stderr, "trimvr predict-eval: error: --noise: expected on, off or POS_M,ROT_DEG, got '%s'\n", o.noise);
+        tv_log(TV_LOG_ERROR, "--noise: expected on, off or POS_M,ROT_DEG, got '%s'", o.noise);
         return 2;
     }
     if (!o.path_count) {
-        fprintf(stderr, "trimvr predict-eval: error: --path is required (see trimvr predict-eval --help)\n");
+        tv_log(TV_LOG_ERROR, "--path is required (see trimvr predict-eval --help)");
         return 2;
     }
     pred_eval_print_header(stdout);

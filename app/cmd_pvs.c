@@ -6,6 +6,7 @@
 #include "cli_viewcell.h"
 #include "commands.h"
 #include "method.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,10 +20,21 @@ static void print_tr_stats(const pvs_stats* s)
            s->silhouettes);
     printf("active pixels     %llu (summed over layers), mean trim sequence %.2f, %llu sorted by a workgroup\n",
            (unsigned long long)s->active_pixels, s->mean_sequence, (unsigned long long)s->coop_pixels);
-    printf("k-buffers         %.1f MiB allocated, %.1f MiB used (largest layer)\n", s->kbuffer_bytes / 1048576.0,
-           s->kbuffer_bytes_used / 1048576.0);
+    printf("k-buffers         %.1f MiB allocated (%u tile%s), %.1f MiB used (largest layer)\n",
+           s->kbuffer_bytes / 1048576.0, s->tiles, s->tiles == 1 ? "" : "s", s->kbuffer_bytes_used / 1048576.0);
     printf("overflow          %llu pixels, %llu front fragments (handled conservatively)\n",
            (unsigned long long)s->overflow_pixels, (unsigned long long)s->overflow_fronts);
+    printf("per layer         tris: in the layer / fronts + backs drawn, regions: trim regions, active: pixels\n"
+           "                  resolved, seq: mean trim sequence, ovf: overflowing pixels, KiB: k-buffer entries read\n");
+    printf("%5s %8s %8s %8s %8s %8s %6s %6s %8s %9s %9s %9s\n", "layer", "tris", "fronts", "backs", "regions",
+           "active", "seq", "ovf", "KiB", "P1 ms", "P2 ms", "P3 ms");
+    for (uint32_t l = 0; s->per_layer && l < s->layers; l++) {
+        const pvs_layer_stats* p = &s->per_layer[l];
+        printf("%5u %8u %8u %8u %8u %8llu %6.2f %6llu %8.1f %9.2f %9.2f %9.2f\n", l, p->triangles, p->fronts,
+               p->backs, p->silhouettes, (unsigned long long)p->active_pixels,
+               p->active_pixels ? (double)p->sequence_entries / (double)p->active_pixels : 0.0,
+               (unsigned long long)p->overflow_pixels, p->kbuffer_bytes_used / 1024.0, p->ms[0], p->ms[1], p->ms[2]);
+    }
 }
 
 int tv_cmd_pvs(int argc, char** argv)
@@ -30,19 +42,21 @@ int tv_cmd_pvs(int argc, char** argv)
     const char *scene = NULL, *method = "tr", *ids_out = NULL;
     float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
-    int k = 0, coop_min = 0;
+    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
         {"dir", TV_ARG_VEC3, dir, "X,Y,Z", "view direction (default 0,0,-1)"},
-        {"delta", TV_ARG_FLOAT, &delta, "M", "viewcell radius (default 0.1)"},
+        {"delta", TV_ARG_FLOAT, &delta, "M", "viewcell radius (default 0.1; tr: at most 31.7 m x tan(fov-pvs / 2))"},
         {"fov", TV_ARG_FLOAT, &fov, "DEG", "display FOV (default 60)"},
-        {"fov-pvs", TV_ARG_FLOAT, &fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
+        TV_ARG_FOV_PVS(&fov_pvs),
         {"res", TV_ARG_RES, res, "WxH", "PVS resolution (default 512x512)"},
-        {"k", TV_ARG_INT, &k, "N", "tr: k-buffer slots per pixel and kind (default 16)"},
+        TV_ARG_K(&k),
         {"coop-min", TV_ARG_INT, &coop_min, "N",
          "tr: sort trim sequences of >= N entries with a workgroup per pixel (default 8; 1000: never)"},
-        {"method", TV_ARG_STRING, &method, "M", "tr, gt, sas, frompoint or q3vis (default tr)"},
+        {"tile-pixels", TV_ARG_INT, &tile_pixels, "N",
+         "tr: compute the image in tiles of at most N pixels (default 262144 = 512x512)"},
+        TV_ARG_METHOD(&method),
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
     };
     tv_args_result r = tv_args_parse("pvs", "Computes the PVS of one viewcell and prints a summary.", args,
@@ -51,17 +65,19 @@ int tv_cmd_pvs(int argc, char** argv)
         return r == TV_ARGS_HELP ? 0 : 2;
     /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
     pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k,
-                                 .coop_sort_min = (uint32_t)coop_min},
+                                 .coop_sort_min = (uint32_t)coop_min, .max_tile_pixels = (uint32_t)tile_pixels},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
-    if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc) ||
-        k < 0 || coop_min < 0) {
-        fprintf(stderr, "trimvr pvs: error: need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0, "
-                        "FOVs in (0, 180) and --k, --coop-min >= 0 (see trimvr pvs --help)\n");
+    if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
+        !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0"))
+        return 2;
+    if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc)) {
+        tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "
+               "FOVs in (0, 180) (see trimvr pvs --help)");
         return 2;
     }
     tv_app_scene s;
-    if (!tv_app_scene_open("pvs", scene, &s))
+    if (!tv_app_scene_open(scene, &s))
         return 1;
     char err[512];
     int status = 0;
@@ -74,7 +90,7 @@ int tv_cmd_pvs(int argc, char** argv)
     uint32_t count = 0;
     pvs_method_stats st = {0};
     if (!m || !pvs_method_compute(m, &req, &ids, &count, &st, err, sizeof err)) {
-        fprintf(stderr, "trimvr pvs: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         status = 1;
     } else {
         printf("scene             %s (%u triangles) on %s\n", scene, s.scene.triangle_count, rnd_device_name(s.ctx));
@@ -91,14 +107,14 @@ int tv_cmd_pvs(int argc, char** argv)
             for (uint32_t i = 0; f && i < count; i++)
                 fprintf(f, "%u\n", ids[i]);
             if (!f || fclose(f) != 0) {
-                fprintf(stderr, "trimvr pvs: error: %s: cannot write\n", ids_out);
+                tv_log(TV_LOG_ERROR, "%s: cannot write", ids_out);
                 status = 1;
             }
         }
     }
     free(ids);
     pvs_method_destroy(m);
-    if (!tv_app_scene_close("pvs", &s))
+    if (!tv_app_scene_close(&s))
         status = 1;
     return status;
 }

@@ -3,7 +3,10 @@
 #define _POSIX_C_SOURCE 200809L
 #include "app_scene.h"
 #include "args.h"
+#include "cli_loop.h"
+#include "auto_place.h"
 #include "commands.h"
+#include "log.h"
 #include "replay.h"
 
 #include <stdio.h>
@@ -12,116 +15,111 @@
 
 #define DEFAULT_PATH "paths/city-walk.csv"
 
-int tv_cmd_replay(int argc, char** argv)
+typedef struct replay_opts {
+    tv_loop_opts loop;
+    const char *path, *scene, *out;
+    unsigned res[2];
+    float latency_factor, cpu_ms, rate, noise_mm, noise_deg;
+    int every, frames, seed;
+    bool noiseless, no_late_latch, no_plots, no_progress;
+} replay_opts;
+
+static tv_args_result parse(replay_opts* o, int argc, char** argv)
 {
-    const char *method = "tr", *predictor = "cv", *policy = "adaptive", *path = NULL, *scene = NULL;
-    const char* out = "out/replay";
-    unsigned res[2] = {640, 360}, pvs_res[2] = {0, 0};
-    float fov = 60.0f, delta = 0.10f, fov_pvs = 0.0f, latency_ms = 50.0f, latency_factor = 0.0f;
-    float head_acc = 0.0f, head_ang_acc = 0.0f;
-    float quantile = 0.99f, ipd = 0.063f, cpu_ms = 4.0f, rate = 90.0f, noise_mm = 0.2f, noise_deg = 0.02f;
-    int every = 1, frames = 0, samples = 0, k = 0, seed = 1;
-    bool noiseless = false, no_late_latch = false, no_plots = false, no_progress = false;
-    const tv_arg args[] = {
-        {"scene", TV_ARG_STRING, &scene, "S", "scene (default: the path's '# scene:' line)"},
-        {"path", TV_ARG_STRING, &path, "FILE", "head-motion path (default " DEFAULT_PATH ")"},
-        {"out", TV_ARG_STRING, &out, "DIR", "output folder (default out/replay)"},
-        {"method", TV_ARG_STRING, &method, "M", "PVS method: tr, gt, sas, frompoint, q3vis (default tr)"},
-        {"predictor", TV_ARG_STRING, &predictor, "P", "cv, ca or kalman (default cv)"},
-        {"policy", TV_ARG_STRING, &policy, "P", "viewcell sizing: adaptive or fixed (default adaptive)"},
-        {"delta", TV_ARG_FLOAT, &delta, "M", "fixed policy: viewcell radius (default 0.10)"},
-        {"fov-pvs", TV_ARG_FLOAT, &fov_pvs, "DEG", "fixed policy: PVS FOV, square frustum (default 90)"},
-        {"quantile", TV_ARG_FLOAT, &quantile, "Q", "adaptive policy: error quantile (default 0.99)"},
-        {"head-acc", TV_ARG_FLOAT, &head_acc, "M/S2", "adaptive policy: physical bound's head acceleration (default 3)"},
-        {"head-ang-acc", TV_ARG_FLOAT, &head_ang_acc, "DEG/S2", "adaptive policy: its angular acceleration (default 2100)"},
-        {"latency-ms", TV_ARG_FLOAT, &latency_ms, "MS", "fixed latency model: request to use (default 50)"},
-        {"latency-factor", TV_ARG_FLOAT, &latency_factor, "F", "measured latency model: compute time x F (overrides --latency-ms)"},
-        {"res", TV_ARG_RES, res, "WxH", "eye image resolution (default 640x360)"},
-        {"fov", TV_ARG_FLOAT, &fov, "DEG", "eye horizontal FOV (default 60, the paper's target)"},
-        {"pvs-res", TV_ARG_RES, pvs_res, "WxH", "tr: PVS resolution (default 512x512)"},
-        {"k", TV_ARG_INT, &k, "N", "tr: k-buffer slots per pixel (default 16)"},
-        {"samples", TV_ARG_INT, &samples, "N", "gt: views per viewcell (default 200)"},
-        {"every", TV_ARG_INT, &every, "N", "render and compare every Nth display frame (default 1)"},
-        {"frames", TV_ARG_INT, &frames, "N", "stop after N display frames (default: whole path)"},
-        {"rate", TV_ARG_FLOAT, &rate, "HZ", "display rate (default 90)"},
-        {"ipd", TV_ARG_FLOAT, &ipd, "M", "inter-pupillary distance (default 0.063)"},
-        {"cpu-ms", TV_ARG_FLOAT, &cpu_ms, "MS", "simulated frame CPU time before submit (default 4)"},
-        {"noise-mm", TV_ARG_FLOAT, &noise_mm, "MM", "sensor position noise sigma (default 0.2)"},
-        {"noise-deg", TV_ARG_FLOAT, &noise_deg, "DEG", "sensor rotation noise sigma (default 0.02)"},
-        {"noiseless", TV_ARG_FLAG, &noiseless, NULL, "no sensor noise or jitter"},
-        {"seed", TV_ARG_INT, &seed, "N", "sensor noise seed (default 1)"},
-        {"no-late-latch", TV_ARG_FLAG, &no_late_latch, NULL, "latch the pose at frame start instead of at submit"},
-        {"no-plots", TV_ARG_FLAG, &no_plots, NULL, "skip the gnuplot PNGs"},
-        {"no-progress", TV_ARG_FLAG, &no_progress, NULL, "no progress bar even on a terminal"},
+    const tv_arg own[] = {
+        {"scene", TV_ARG_STRING, &o->scene, "S", "scene (default: the path's '# scene:' line)"},
+        {"path", TV_ARG_STRING, &o->path, "FILE",
+         "head-motion path (default: with --scene its bundled walk or an automatic one, else " DEFAULT_PATH ")"},
+        {"out", TV_ARG_STRING, &o->out, "DIR", "output folder (default out/replay; an earlier run's outputs are removed)"},
+        {"latency-factor", TV_ARG_FLOAT, &o->latency_factor, "F", "measured latency model: compute time x F (overrides --latency-ms)"},
+        {"res", TV_ARG_RES, o->res, "WxH", "eye image resolution (default 640x360)"},
+        {"every", TV_ARG_INT, &o->every, "N", "render and compare every Nth display frame (default 1)"},
+        {"frames", TV_ARG_INT, &o->frames, "N", "stop after N display frames (default: whole path)"},
+        {"rate", TV_ARG_FLOAT, &o->rate, "HZ", "display rate (default 90)"},
+        {"cpu-ms", TV_ARG_FLOAT, &o->cpu_ms, "MS", "simulated frame CPU time before submit (default 4)"},
+        {"noise-mm", TV_ARG_FLOAT, &o->noise_mm, "MM", "sensor position noise sigma (default 0.2)"},
+        {"noise-deg", TV_ARG_FLOAT, &o->noise_deg, "DEG", "sensor rotation noise sigma (default 0.02)"},
+        {"noiseless", TV_ARG_FLAG, &o->noiseless, NULL, "no sensor noise or jitter"},
+        {"seed", TV_ARG_INT, &o->seed, "N", "sensor noise seed (default 1)"},
+        {"no-late-latch", TV_ARG_FLAG, &o->no_late_latch, NULL, "latch the pose at frame start instead of at submit"},
+        {"no-plots", TV_ARG_FLAG, &o->no_plots, NULL, "skip the gnuplot PNGs"},
+        {"no-progress", TV_ARG_FLAG, &o->no_progress, NULL, "no progress bar even on a terminal"},
     };
+    enum { OWN = (int)(sizeof own / sizeof own[0]) };
+    tv_arg args[OWN + TV_LOOP_ARG_COUNT];
+    memcpy(args, own, sizeof own);
+    tv_loop_args(&o->loop, args + OWN);
     const char* summary =
         "Replays a head-motion path through the simulated HMD: predicts the head, sizes a viewcell,\n"
         "computes PVSs asynchronously and renders every frame per eye from the PVS and from the full\n"
         "scene. Writes DIR/frames.csv (row by row), DIR/summary.json, DIR/plot_*.png and the worst\n"
-        "frame's images (worst_full.png, worst_pvs.png, worst_diff.png); prints a summary table.";
-    tv_args_result r = tv_args_parse("replay", summary, args, (int)(sizeof args / sizeof args[0]), argc, argv);
+        "frame's images (worst_full.png, worst_pvs.png, worst_diff.png); prints a summary table.\n"
+        "Ctrl-C (SIGINT) or SIGTERM stops after the current frame and writes summary.json with\n"
+        "\"interrupted\": true; the exit status is then 128 + the signal number.";
+    return tv_args_parse("replay", summary, args, OWN + TV_LOOP_ARG_COUNT, argc, argv);
+}
+
+static bool validate(const replay_opts* o)
+{
+    return tv_loop_validate(&o->loop) && tv_arg_require("every", o->every, o->every >= 1, ">= 1") &&
+           tv_arg_require("frames", o->frames, o->frames >= 0, ">= 0") &&
+           tv_arg_require("latency-factor", o->latency_factor, o->latency_factor >= 0.0f && o->latency_factor <= 1000.0f,
+                          "in [0, 1000]") &&
+           tv_arg_require("rate", o->rate, o->rate > 0.0f && o->rate <= 10000.0f, "in (0, 10000] Hz") &&
+           tv_arg_require("cpu-ms", o->cpu_ms, o->cpu_ms >= 0.0f && o->cpu_ms * 1e-3f < 1.0f / o->rate,
+                          "non-negative and below one display frame (1000 / --rate ms)") &&
+           tv_arg_require("noise-mm", o->noise_mm, o->noise_mm >= 0.0f && o->noise_mm <= 1000.0f, "in [0, 1000] mm") &&
+           tv_arg_require("noise-deg", o->noise_deg, o->noise_deg >= 0.0f && o->noise_deg <= 180.0f,
+                          "in [0, 180] degrees");
+}
+
+/* False (after a one-line error) when a name is unknown. */
+static bool fill_desc(const replay_opts* o, tv_replay_desc* d)
+{
+    memset(d, 0, sizeof *d);
+    if (!tv_loop_fill(&o->loop, (float)o->res[0] / (float)o->res[1], &d->method, &d->predictor, &d->viewcell))
+        return false;
+    d->scene = o->scene;
+    d->path = o->path;
+    d->out_dir = o->out;
+    d->hmd.display_rate_hz = o->rate;
+    d->hmd.ipd_m = o->loop.ipd;
+    d->hmd.pos_noise_m = o->noise_mm * 1e-3;
+    d->hmd.rot_noise_deg = o->noise_deg;
+    d->hmd.noiseless = o->noiseless || (o->noise_mm == 0.0f && o->noise_deg == 0.0f);
+    d->hmd.seed = (uint64_t)o->seed;
+    d->latency_model = o->latency_factor > 0.0f ? TV_LATENCY_MEASURED : TV_LATENCY_FIXED;
+    d->latency_s = o->loop.latency_ms * 1e-3;
+    d->latency_factor = o->latency_factor;
+    d->width = o->res[0];
+    d->height = o->res[1];
+    d->near_m = 0.05f;
+    d->far_m = 500.0f;
+    d->every = o->every;
+    d->max_frames = (uint64_t)o->frames;
+    d->cpu_ms = o->cpu_ms;
+    d->no_late_latch = o->no_late_latch;
+    d->progress = !o->no_progress && isatty(STDERR_FILENO);
+    d->plots = !o->no_plots;
+    return true;
+}
+
+int tv_cmd_replay(int argc, char** argv)
+{
+    replay_opts o = {.loop = TV_LOOP_OPTS_DEFAULT, .out = "out/replay", .res = {640, 360}, .cpu_ms = 4.0f,
+                     .rate = 90.0f, .noise_mm = 0.2f, .noise_deg = 0.02f, .every = 1, .seed = 1};
+    tv_args_result r = parse(&o, argc, argv);
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;
-
-    tv_replay_desc d;
-    memset(&d, 0, sizeof d);
     char path_buf[4300];
-    d.scene = scene;
-    d.path = path ? path : tv_bundled_file(DEFAULT_PATH, path_buf, sizeof path_buf);
-    d.out_dir = out;
-    if (!pvs_method_from_name(method, &d.method.kind)) {
-        fprintf(stderr, "trimvr replay: error: --method: unknown method '%s' (tr, gt, sas, frompoint, q3vis)\n", method);
+    tv_replay_desc d;
+    if (!validate(&o) || !fill_desc(&o, &d))
         return 2;
+    if (!o.path) {
+        d.path = o.scene ? tv_default_walk(o.scene, o.out, path_buf, sizeof path_buf)
+                         : tv_bundled_file(DEFAULT_PATH, path_buf, sizeof path_buf);
+        if (!d.path)
+            return 1;
     }
-    if (!pred_kind_from_name(predictor, &d.predictor.kind)) {
-        fprintf(stderr, "trimvr replay: error: --predictor: unknown predictor '%s' (cv, ca, kalman)\n", predictor);
-        return 2;
-    }
-    if (strcmp(policy, "adaptive") != 0 && strcmp(policy, "fixed") != 0) {
-        fprintf(stderr, "trimvr replay: error: --policy: expected adaptive or fixed, got '%s'\n", policy);
-        return 2;
-    }
-    if (every < 1 || frames < 0 || samples < 0 || k < 0 || !(fov > 1.0f && fov < 170.0f) || !(delta >= 0.0f) ||
-        !(fov_pvs == 0.0f || (fov_pvs >= fov && fov_pvs < 179.0f)) || !(quantile > 0.0f && quantile <= 1.0f) ||
-        !(latency_ms >= 0.0f) || !(head_acc >= 0.0f) || !(head_ang_acc >= 0.0f) || !(latency_factor >= 0.0f) || !(rate > 0.0f) || !(ipd >= 0.0f) ||
-        !(cpu_ms >= 0.0f && cpu_ms * 1e-3f < 1.0f / rate) || !(noise_mm >= 0.0f) || !(noise_deg >= 0.0f)) {
-        fprintf(stderr, "trimvr replay: error: an option is out of range (see trimvr replay --help): need "
-                        "--every >= 1, 1 < --fov < 170, --fov <= --fov-pvs < 179, 0 < --quantile <= 1, "
-                        "--cpu-ms below one display frame, and non-negative sizes\n");
-        return 2;
-    }
-    /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
-    d.method.tr.width = pvs_res[0] ? pvs_res[0] : 512;
-    d.method.tr.height = pvs_res[1] ? pvs_res[1] : 512;
-    d.method.tr.k = (uint32_t)k;
-    d.method.gt_samples = (uint32_t)samples;
-    d.viewcell.policy = strcmp(policy, "fixed") == 0 ? PRED_POLICY_FIXED : PRED_POLICY_ADAPTIVE;
-    d.viewcell.fixed_delta_m = delta;
-    d.viewcell.fixed_fov_pvs_deg = fov_pvs;
-    d.viewcell.quantile = quantile;
-    d.viewcell.head_acc_mps2 = head_acc;
-    d.viewcell.head_ang_acc_dps2 = head_ang_acc;
-    d.viewcell.ipd_m = ipd;
-    d.viewcell.display_fov_h_deg = fov;
-    d.viewcell.display_fov_v_deg = rnd_fov_y_from_x(fov, (float)res[0] / (float)res[1]);
-    d.hmd.display_rate_hz = rate;
-    d.hmd.ipd_m = ipd;
-    d.hmd.pos_noise_m = noise_mm * 1e-3;
-    d.hmd.rot_noise_deg = noise_deg;
-    d.hmd.noiseless = noiseless || (noise_mm == 0.0f && noise_deg == 0.0f);
-    d.hmd.seed = (uint64_t)seed;
-    d.latency_model = latency_factor > 0.0f ? TV_LATENCY_MEASURED : TV_LATENCY_FIXED;
-    d.latency_s = latency_ms * 1e-3;
-    d.latency_factor = latency_factor;
-    d.width = res[0];
-    d.height = res[1];
-    d.near_m = 0.05f;
-    d.far_m = 500.0f;
-    d.every = every;
-    d.max_frames = (uint64_t)frames;
-    d.cpu_ms = cpu_ms;
-    d.no_late_latch = no_late_latch;
-    d.progress = !no_progress && isatty(STDERR_FILENO);
-    d.plots = !no_plots;
     return tv_replay_run(&d);
 }

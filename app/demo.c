@@ -2,6 +2,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "demo.h"
 
+#include "app_scene.h"
 #include "clock.h"
 #include "demo_hud.h"
 #include "demo_window.h"
@@ -9,18 +10,20 @@
 #include "image_io.h"
 #include "path.h"
 #include "swapchain.h"
+#include "log.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 typedef struct demo {
     const tv_demo_desc* d;
     tv_window* win;
     tv_app_scene s;
     rnd_swapchain* sc;
-    tv_live_pvs pvs;
+    tv_pvs_pipeline pvs;
     tv_eye_renderer eye;
     pred_path path;
     bool follow; /* the head follows the path (else the keyboard and mouse) */
@@ -54,6 +57,26 @@ static void head_at(const demo* m, double t, pred_pose* out)
     } else {
         tv_head_pose(&m->head, t, out);
     }
+}
+
+/* The head as a sensor at this rate: the display loop only knows it once per
+ * frame, so the samples in between are interpolated, linear in position,
+ * shortest arc in orientation. */
+#define DEMO_SENSOR_RATE_HZ 1000.0
+
+static void feed_head(demo* m, const pred_pose* head)
+{
+    pred_pose last = m->pvs.last;
+    int n = (int)((head->t - last.t) * DEMO_SENSOR_RATE_HZ);
+    for (int i = 1; i <= n; i++) {
+        pred_pose s;
+        pred_pose_lerp(&last, head, (double)i / (n + 1), &s);
+        s.t = last.t + (head->t - last.t) * i / (n + 1);
+        tv_pvs_pipeline_observe(&m->pvs, &s);
+    }
+    if (head->t > last.t)
+        tv_pvs_pipeline_observe(&m->pvs, head);
+    tv_pvs_pipeline_track(&m->pvs, head->t);
 }
 
 static double now_s(const demo* m) { return (tv_now_ms() - m->wall0) * 1e-3; }
@@ -139,7 +162,7 @@ static void copy_to_mirror(demo* m, int half)
  * up, so looking up or down does not tip the overview). */
 static bool render_overview(demo* m, const pred_pose* head)
 {
-    const tv_pvs_result* cur = &m->pvs.current;
+    const tv_pvs_result* cur = &m->pvs.current.r;
     double f[3], up[3] = {0.0, 1.0, 0.0};
     pred_pose_forward(head->q, f);
     double len = hypot(f[0], f[2]);
@@ -147,7 +170,7 @@ static bool render_overview(demo* m, const pred_pose* head)
     rnd_camera cam;
     tv_overview_camera(&m->s.scene, head->p, flat, up, &cam);
     cam.fov_y_deg = m->fov_v_deg;
-    if (!tv_overview_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->seen, m->pvs.mask, m->s.scene.triangle_count))
+    if (!tv_overview_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->seen, m->pvs.current.mask, m->s.scene.triangle_count))
         return false;
     tv_canvas c = {m->eye.rgba, (int)m->d->width, (int)m->d->height};
     tv_draw_viewcell(&c, &cam, &cur->vc, viewcell_colour(m->inside));
@@ -164,14 +187,14 @@ static bool render_eyes(demo* m, const pred_pose* head)
     bool check = m->overview || m->frame % (uint64_t)d->check_every == 0;
     pred_pose eyes[2];
     pred_eye_poses(head, d->ipd_m, eyes);
-    const tv_pvs_result* cur = &m->pvs.current;
+    const tv_pvs_result* cur = &m->pvs.current.r;
     uint32_t n = m->s.scene.triangle_count;
     if (m->overview)
         memset(m->seen, 0, n ? n : 1);
     m->inside = true;
     for (int e = 0; e < 2; e++) {
         rnd_camera cam = tv_camera_at_pose(&eyes[e], m->fov_v_deg, m->d->near_m, m->d->far_m);
-        if (!tv_eye_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->mode, cur->ids, cur->count, m->pvs.mask, n, check,
+        if (!tv_eye_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->mode, cur->ids, cur->count, m->pvs.current.mask, n, check,
                            &m->check[e]))
             return false;
         bool in = pred_viewcell_contains(&cur->vc, eyes[e].p, eyes[e].q, d->fov_h_deg, m->fov_v_deg, NULL);
@@ -199,7 +222,7 @@ static void draw_overlays(demo* m, double t)
 {
     tv_canvas c = {m->mirror, (int)m->mirror_w, (int)m->mirror_h};
     int scale = m->mirror_h >= 320 ? 2 : 1;
-    const tv_pvs_result* cur = &m->pvs.current;
+    const tv_pvs_result* cur = &m->pvs.current.r;
     if (m->hud) {
         tv_hud_info info = {
             .fps = m->frame_ms > 0.0 ? 1e3 / m->frame_ms : 0.0,
@@ -240,7 +263,7 @@ static bool write_shot(demo* m, const char* file)
     char err[512];
     rnd_swapchain_extent(m->sc, &w, &h);
     if (!scn_image_write_png(file, m->shot, w, h, 4, err, sizeof err)) {
-        fprintf(stderr, "trimvr demo: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return false;
     }
     printf("trimvr demo: screenshot %s (%ux%u)\n", file, w, h);
@@ -290,8 +313,8 @@ static bool present(demo* m, const char* shot_file)
         }
         return !shot_file || write_shot(m, shot_file);
     }
-    fprintf(stderr, "trimvr demo: error: presenting frame %llu: %s\n", (unsigned long long)m->frame,
-            err[0] ? err : "the window kept changing size");
+    tv_log(TV_LOG_ERROR, "presenting frame %llu: %s", (unsigned long long)m->frame,
+           err[0] ? err : "the window kept changing size");
     return false;
 }
 
@@ -313,8 +336,9 @@ static bool frame(demo* m, double t)
     head_at(m, t, &head);
     char err[768] = "";
     double frame_s = fixed_clock(m) ? 1.0 / d->rate_hz : m->frame_ms * 1e-3;
-    if (!tv_live_pvs_update(&m->pvs, &head, frame_s, m->frozen, err, sizeof err)) {
-        fprintf(stderr, "trimvr demo: error: %s\n", err);
+    feed_head(m, &head);
+    if (tv_pvs_pipeline_step(&m->pvs, head.t, frame_s, !m->frozen, err, sizeof err) < 0) {
+        tv_log(TV_LOG_ERROR, "%s", err);
         return false;
     }
     if (!fixed_clock(m)) { /* late latch: the newest input and clock right before rendering */
@@ -324,8 +348,8 @@ static bool frame(demo* m, double t)
         head_at(m, t_latch, &head);
     }
     if (!render_eyes(m, &head)) {
-        fprintf(stderr, "trimvr demo: error: rendering frame %llu failed (Vulkan error logged)\n",
-                (unsigned long long)m->frame);
+        tv_log(TV_LOG_ERROR, "rendering frame %llu failed (Vulkan error logged)",
+               (unsigned long long)m->frame);
         return false;
     }
     draw_overlays(m, t);
@@ -386,14 +410,21 @@ static bool setup(demo* m, char* err, size_t err_size)
     pred_pose start;
     start_pose(m, &start);
     tv_head_init(&m->head, &start);
-    m->follow = m->path.count > 0;
+    m->follow = d->path != NULL;
     start.t = 0.0;
-    return tv_live_pvs_start(&m->pvs, &d->pvs, &m->s, &start, err, err_size);
+    if (!tv_pvs_pipeline_start(&m->pvs, &d->pvs, m->s.ctx, &m->s.scene, m->s.gpu, err, err_size))
+        return false;
+    /* a resting head: the predictor needs two samples for a velocity */
+    pred_pose before = start;
+    before.t -= 0.05;
+    tv_pvs_pipeline_observe(&m->pvs, &before);
+    feed_head(m, &start);
+    return tv_pvs_pipeline_first(&m->pvs, start.t, 0.0, err, err_size);
 }
 
 static void teardown(demo* m)
 {
-    tv_live_pvs_stop(&m->pvs);
+    tv_pvs_pipeline_stop(&m->pvs);
     tv_eye_renderer_free(&m->eye, m->s.ctx);
     rnd_swapchain_destroy(m->s.ctx, m->sc);
     tv_window_close(m->win);
@@ -411,6 +442,23 @@ static void summary(const demo* m, double wall_s)
            pvs_method_name(m->d->pvs.method.kind), (unsigned long long)m->misses, m->d->fov_h_deg, m->fov_v_deg);
 }
 
+/* Without a path, start position or heading the head starts where the scene's
+ * bundled walk does (paths/NAME-walk.csv for builtin:NAME or NAME), looking
+ * into the scene: its bounds centre may be inside a wall. The walk stays
+ * loaded for T (follow the path). */
+static void bundled_walk(const char* spec, pred_path* out)
+{
+    const char* name = strncmp(spec, "builtin:", 8) == 0 ? spec + 8 : spec;
+    char rel[256], buf[4096], err[512];
+    if (strpbrk(name, "/:.") || snprintf(rel, sizeof rel, "paths/%s-walk.csv", name) >= (int)sizeof rel)
+        return;
+    const char* file = tv_bundled_file(rel, buf, sizeof buf);
+    if (access(file, R_OK) != 0 || !pred_path_load(file, out, err, sizeof err))
+        return;
+    if (strcmp(out->scene, spec) != 0)
+        pred_path_free(out);
+}
+
 int tv_demo_run(const tv_demo_desc* d)
 {
     char err[768] = "";
@@ -422,32 +470,34 @@ int tv_demo_run(const tv_demo_desc* d)
     m.overview = d->overview;
     m.fov_v_deg = rnd_fov_y_from_x(d->fov_h_deg, (float)d->width / (float)d->height);
     if (d->path && !pred_path_load(d->path, &m.path, err, sizeof err)) {
-        fprintf(stderr, "trimvr demo: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
         return 1;
     }
     const char* spec = d->scene ? d->scene : m.path.scene[0] ? m.path.scene : "builtin:interior";
+    if (!d->path && !d->have_start && d->start_yaw_deg == 0.0f)
+        bundled_walk(spec, &m.path);
     if (!tv_window_system_init(err, sizeof err)) {
-        fprintf(stderr, "trimvr demo: error: %s; the demo needs a display: run 'trimvr replay' for the headless "
-                        "loop, or run it under Xvfb: xvfb-run -a build/trimvr demo ...\n", err);
+        tv_log(TV_LOG_ERROR, "%s; the demo needs a display: run 'trimvr replay' for the headless "
+               "loop, or run it under Xvfb: xvfb-run -a build/trimvr demo ...", err);
         pred_path_free(&m.path);
         return 1;
     }
     uint32_t ext_count = 0;
     const char* const* exts = tv_window_instance_extensions(&ext_count);
     rnd_desc rd = {.instance_extensions = exts, .instance_extension_count = ext_count, .swapchain = true};
-    bool ok = exts && tv_app_scene_open_desc("demo", spec, &rd, &m.s);
+    bool ok = exts && tv_app_scene_open_desc(spec, &rd, &m.s);
     if (!exts)
-        fprintf(stderr, "trimvr demo: error: GLFW lists no Vulkan surface extensions for this display\n");
+        tv_log(TV_LOG_ERROR, "GLFW lists no Vulkan surface extensions for this display");
     if (ok && !(setup(&m, err, sizeof err) && run(&m))) {
         if (err[0])
-            fprintf(stderr, "trimvr demo: error: %s\n", err);
+            tv_log(TV_LOG_ERROR, "%s", err);
         ok = false;
     }
     if (ok)
         summary(&m, (tv_now_ms() - m.wall0) * 1e-3);
     if (m.s.ctx) {
         teardown(&m);
-        ok = tv_app_scene_close("demo", &m.s) && ok;
+        ok = tv_app_scene_close(&m.s) && ok;
     }
     tv_window_system_shutdown();
     pred_path_free(&m.path);

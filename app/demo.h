@@ -10,13 +10,13 @@
 #ifndef TRIMVR_APP_DEMO_H
 #define TRIMVR_APP_DEMO_H
 
-#include "demo_pvs.h"
 #include "demo_view.h"
+#include "pvs_pipeline.h"
 
 typedef struct tv_demo_desc {
     const char* scene;       /* scene spec; NULL: the path's '# scene:' */
     const char* path;        /* NULL: keyboard and mouse only */
-    tv_live_pvs_desc pvs;    /* viewcell.display_fov_* and ipd set from the eyes */
+    tv_pvs_pipeline_desc pvs; /* viewcell.display_fov_* and ipd set from the eyes */
     unsigned width, height;  /* per eye */
     float fov_h_deg;         /* per-eye horizontal FOV */
     float ipd_m;

@@ -1,6 +1,7 @@
 /* trimvr - latency-compensating VR renderer with trim-region PVS.
  * Dispatches to the subcommands in commands.h. */
 #include "commands.h"
+#include "log.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -41,8 +42,12 @@ int main(int argc, char** argv)
         return 0;
     }
     for (int i = 0; i < k_command_count; i++)
-        if (strcmp(argv[1], k_commands[i].name) == 0)
+        if (strcmp(argv[1], k_commands[i].name) == 0) {
+            char program[64];
+            snprintf(program, sizeof program, "trimvr %s", argv[1]);
+            tv_log_set_program(program); /* errors read "trimvr render: error: ..." */
             return k_commands[i].run(argc - 2, argv + 2);
-    fprintf(stderr, "trimvr: error: unknown command '%s' (see trimvr --help)\n", argv[1]);
+        }
+    tv_log(TV_LOG_ERROR, "unknown command '%s' (see trimvr --help)", argv[1]);
     return 2;
 }

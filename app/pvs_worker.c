@@ -23,7 +23,6 @@ struct tv_worker {
 
     /* the one job; fields below are guarded by mutex */
     job_state state;
-    pred_viewcell vc;
     void* extra; /* extra_size bytes */
     double t_request;
     double started_ms; /* wall clock when the worker picked the job up */
@@ -43,7 +42,6 @@ static void* worker_main(void* arg)
             break;
         w->state = JOB_RUNNING;
         w->started_ms = tv_now_ms();
-        pred_viewcell vc = w->vc;
         pthread_cond_broadcast(&w->cond);
         pthread_mutex_unlock(&w->mutex);
 
@@ -53,7 +51,7 @@ static void* worker_main(void* arg)
         void* stats = calloc(1, w->desc.stats_size ? w->desc.stats_size : 1);
         char err[512] = "";
         double t0 = tv_now_ms();
-        bool ok = stats && w->desc.compute(w->desc.user, &vc, w->extra, &ids, &count, stats, err, sizeof err);
+        bool ok = stats && w->desc.compute(w->desc.user, w->extra, &ids, &count, stats, err, sizeof err);
         double ms = tv_now_ms() - t0;
         if (!stats)
             snprintf(err, sizeof err, "PVS worker: out of memory");
@@ -112,7 +110,6 @@ void tv_worker_submit(tv_worker* w, const pred_viewcell* vc, const void* extra, 
     pthread_mutex_lock(&w->mutex);
     assert(w->state == JOB_IDLE);
     assert(extra || !w->desc.extra_size);
-    w->vc = *vc;
     if (w->desc.extra_size) /* the worker reads it only while the job runs */
         memcpy(w->extra, extra, w->desc.extra_size);
     w->t_request = t_request;

@@ -19,14 +19,14 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-/* Computes the PVS of one viewcell on the worker thread. `extra` is the
- * request's method-specific data (extra_size bytes, copied at submit; NULL
+/* Computes the PVS of one request on the worker thread. `extra` is the
+ * request (extra_size bytes, copied at submit, carrying its viewcell; NULL
  * when extra_size is 0). On success fills a malloc'ed sorted id list (*ids,
  * *count; the worker takes ownership) and method-specific statistics into
  * stats (opaque to the worker, stats_size bytes). On failure returns false
  * with a one-line message in err. */
-typedef bool (*tv_pvs_compute_fn)(void* user, const pred_viewcell* vc, const void* extra, uint32_t** ids,
-                                  uint32_t* count, void* stats, char* err, size_t err_size);
+typedef bool (*tv_pvs_compute_fn)(void* user, const void* extra, uint32_t** ids, uint32_t* count, void* stats,
+                                  char* err, size_t err_size);
 
 typedef enum tv_latency_model {
     TV_LATENCY_FIXED = 0,
@@ -60,8 +60,9 @@ typedef struct tv_worker tv_worker;
 /* Starts the worker thread. NULL (message in err) if the thread cannot start. */
 tv_worker* tv_worker_start(const tv_worker_desc* desc, char* err, size_t err_size);
 
-/* Asks for the PVS of vc at simulated time t_request; `extra` (extra_size
- * bytes, may be NULL when that is 0) is copied. Precondition: no request in
+/* Asks for the PVS of a request at simulated time t_request; `extra`
+ * (extra_size bytes, may be NULL when that is 0) is copied, `vc` is kept as
+ * the result's (tv_pvs_result.vc). Precondition: no request in
  * flight (tv_worker_busy() is false). Never blocks on the compute. */
 void tv_worker_submit(tv_worker* w, const pred_viewcell* vc, const void* extra, double t_request);
 

@@ -3,11 +3,13 @@
 
 #include "app_scene.h"
 #include "clock.h"
-#include "error_tracker.h"
-#include "fs.h"
+#include "pvs_pipeline.h"
 #include "image_compare.h"
+#include "interrupt.h"
 #include "replay_log.h"
 #include "replay_plots.h"
+#include "log.h"
+#include "ssim.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -15,89 +17,30 @@
 #include <string.h>
 #include <unistd.h>
 
-/* The worker's compute: one PVS method call. */
-static bool compute_pvs(void* user, const pred_viewcell* vc, const void* extra, uint32_t** ids, uint32_t* count,
-                        void* stats, char* err, size_t err_size)
-{
-    const pvs_request* req = extra;
-    (void)vc; /* the request carries the same viewcell */
-    return pvs_method_compute(user, req, ids, count, stats, err, err_size);
-}
-
-/* What the loop keeps about a PVS besides the worker's result: the head
- * poses predicted at request time over the use window, to log how far each
- * frame's real pose was from what the viewcell was sized for. */
-#define PREDICTION_STEPS 64
-typedef struct pvs_slot {
-    tv_pvs_result r;
-    uint8_t* mask; /* triangle_count bytes */
-    pred_pose predicted[PREDICTION_STEPS];
-    double pred_t0, pred_dt;
-    bool valid;
-} pvs_slot;
-
 typedef struct replay_state {
     const tv_replay_desc* d;
     tv_app_scene s;
     pred_path path;
     hmd_sim sim;
-    pred_predictor predictor;
-    pred_error_tracker tracker;
-    pvs_method* method;
-    tv_worker* worker;
+    tv_pvs_pipeline pipe;
     tv_replay_log* log;
     rnd_target* target;
     uint8_t *rgba_full, *rgba_pvs;
+    double* ssim_scratch;
     uint32_t* ids_full;
     tv_worst_frame worst;
-    pvs_slot current, pending; /* pending: the one in flight (its predictions) */
-    pred_pose sample, latched;
-    bool have_sample, have_latched;
-    double latency_est_s; /* fixed model: the latency; measured: until the first PVS is timed */
-    double frustum_ms[8];  /* measured model: the last PVSs' compute times per frustum */
-    int timed;
+    pred_pose sample;
+    bool have_sample;
     float eye_fov_v;
-    char latency_name[64];
 } replay_state;
 
-static void slot_release(pvs_slot* s)
-{
-    tv_pvs_result_free(&s->r);
-    free(s->mask);
-    memset(s, 0, sizeof *s);
-}
-
-static void predicted_at(const pvs_slot* s, double t, pred_pose* out)
-{
-    double u = (t - s->pred_t0) / s->pred_dt;
-    int i = u <= 0 ? 0 : u >= PREDICTION_STEPS - 1 ? PREDICTION_STEPS - 2 : (int)u;
-    double f = u - i;
-    f = f < 0 ? 0 : f > 1 ? 1 : f;
-    pred_pose_lerp(&s->predicted[i], &s->predicted[i + 1], f, out);
-    out->t = t;
-}
-
-/* Feeds every sensor sample up to time t to the predictor and the error
- * tracker, and latches the newest one. */
+/* Feeds every sensor sample up to time t to the PVS pipeline, whose newest
+ * one is the latched pose. */
 static void feed_samples(replay_state* st, double t)
 {
     while (st->have_sample && st->sample.t <= t) {
-        pred_predictor_update(&st->predictor, &st->sample);
-        pred_error_tracker_observe(&st->tracker, &st->sample);
-        st->latched = st->sample;
-        st->have_latched = true;
+        tv_pvs_pipeline_observe(&st->pipe, &st->sample);
         st->have_sample = hmd_sim_next(&st->sim, &st->sample);
-    }
-}
-
-/* Records this frame's predictions at every tracked horizon, so the
- * adaptive policy's error quantiles follow the motion online. */
-static void track_horizons(replay_state* st, double t)
-{
-    for (int h = 0; h < st->tracker.horizon_count; h++) {
-        pred_pose p;
-        if (pred_predictor_predict(&st->predictor, t + st->tracker.horizons_s[h], &p))
-            pred_error_tracker_push(&st->tracker, h, &p);
     }
 }
 
@@ -113,81 +56,10 @@ static const char* miss_token(pred_viewcell_miss why)
     return "unknown";
 }
 
-/* The start-up PVS's use window begins at its request (a zero latency_s
- * would mean the viewcell desc's default, 50 ms). */
-static const double k_now_s = 1e-9;
-
-/* Latency of a PVS of `frusta` frusta: the fixed model's, or the slowest of
- * the recent per-frustum compute times (a loaded machine's times vary by 2x:
- * an average would size windows the next PVS outlasts) x frusta x factor. */
-static double latency_for(const replay_state* st, int frusta)
+static void log_pvs(replay_state* st)
 {
-    if (st->d->latency_model == TV_LATENCY_FIXED || !st->timed)
-        return st->latency_est_s;
-    double ms = 0.0;
-    for (int i = 0; i < st->timed && i < 8; i++)
-        ms = ms > st->frustum_ms[i] ? ms : st->frustum_ms[i];
-    return ms * 1e-3 * frusta * st->d->latency_factor;
-}
-
-/* `first`: the start-up PVS is used from the first frame on, so its window
- * starts at the request instead of one latency later. */
-static bool submit_request(replay_state* st, double t_request, bool first, char* err, size_t err_size)
-{
-    const tv_replay_desc* d = st->d;
-    pred_viewcell_desc vd = d->viewcell;
-    double frame_s = 1.0 / st->sim.desc.display_rate_hz;
-    pvs_request req;
-    memset(&req, 0, sizeof req);
-    /* requests go out back to back: this PVS is in use from its arrival until
-     * the next one arrives one latency later, plus a frame of slack. A PVS
-     * over all directions takes one compute per frustum: sized again for that
-     * latency (the longer horizon keeps it all-directions) */
-    for (int frusta = 1;; frusta = req.vc.frusta) {
-        double latency = latency_for(st, frusta);
-        vd.latency_s = first ? k_now_s : latency;
-        vd.window_s = (first ? 2.0 : 1.0) * latency + frame_s;
-        if (!pred_viewcell_size(&vd, &st->predictor, &st->tracker, t_request, &req.vc)) {
-            snprintf(err, err_size, "%s: no sensor sample before t = %.3f s", d->path, t_request);
-            return false;
-        }
-        if (req.vc.frusta == frusta || latency_for(st, req.vc.frusta) == latency)
-            break;
-    }
-    pvs_slot* p = &st->pending;
-    p->pred_t0 = t_request;
-    p->pred_dt = (vd.latency_s + vd.window_s + 2.0 * frame_s) / (PREDICTION_STEPS - 1);
-    for (int i = 0; i < PREDICTION_STEPS; i++)
-        pred_predictor_predict(&st->predictor, t_request + i * p->pred_dt, &p->predicted[i]);
-    pred_pose a, b;
-    predicted_at(p, req.vc.t_begin, &a);
-    predicted_at(p, req.vc.t_end, &b);
-    for (int k = 0; k < 3; k++)
-        req.motion[k] = b.p[k] - a.p[k];
-    req.current = st->latched;
-    req.eye_fov_h_deg = d->viewcell.display_fov_h_deg;
-    tv_worker_submit(st->worker, &req.vc, &req, t_request);
-    return true;
-}
-
-static bool adopt(replay_state* st, tv_pvs_result* r, char* err, size_t err_size)
-{
-    pvs_slot next = st->pending;
-    next.r = *r;
-    next.mask = calloc(st->s.scene.triangle_count ? st->s.scene.triangle_count : 1, 1);
-    if (!next.mask) {
-        tv_pvs_result_free(r);
-        snprintf(err, err_size, "out of memory");
-        return false;
-    }
-    for (uint32_t i = 0; i < r->count; i++)
-        next.mask[r->ids[i]] = 1;
-    next.valid = true;
-    slot_release(&st->current);
-    st->current = next;
+    const tv_pvs_result* r = &st->pipe.current.r;
     tv_replay_log_pvs(st->log, r->compute_ms, r->vc.frusta, r->vc.clamped);
-    st->frustum_ms[st->timed++ % 8] = r->compute_ms / (r->vc.frusta > 1 ? r->vc.frusta : 1);
-    return true;
 }
 
 /* One frames.csv row for eye e; `render`: draw and compare the images, else
@@ -195,7 +67,7 @@ static bool adopt(replay_state* st, tv_pvs_result* r, char* err, size_t err_size
 static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_submit, int e, const pred_pose* eye,
                     const pred_pose* predicted_eye, pred_viewcell_miss why, bool render, char* err, size_t err_size)
 {
-    const pvs_slot* cur = &st->current;
+    const tv_pvs_slot* cur = &st->pipe.current;
     size_t pixels = (size_t)st->d->width * st->d->height;
     rnd_draw_stats full_st = {0}, pvs_st = {0};
     if (render) {
@@ -214,7 +86,7 @@ static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_s
         .t = t_frame,
         .eye = e,
         .pose = *eye,
-        .pose_age_ms = (t_submit - st->latched.t) * 1e3,
+        .pose_age_ms = (t_submit - st->pipe.last.t) * 1e3,
         .predicted = *predicted_eye,
         .pred_err_pos_m = pred_vec3_dist(eye->p, predicted_eye->p),
         .pred_err_rot_deg = pred_quat_angle_deg(eye->q, predicted_eye->q),
@@ -239,6 +111,7 @@ static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_s
          * the wall clock would include waiting behind the PVS worker's work */
         row.render_pvs_ms = pvs_st.gpu_ms >= 0.0 ? pvs_st.gpu_ms : pvs_st.cpu_ms;
         row.render_full_ms = full_st.gpu_ms >= 0.0 ? full_st.gpu_ms : full_st.cpu_ms;
+        row.ssim = rnd_ssim_rgb8(st->rgba_full, st->rgba_pvs, st->d->width, st->d->height, 4, st->ssim_scratch);
         tv_worst_frame_offer(&st->worst, row.psnr_db, frame, e, st->rgba_full, st->rgba_pvs, st->ids_full, cur->mask,
                              st->s.scene.triangle_count);
     }
@@ -258,7 +131,7 @@ static void progress(const replay_state* st, uint64_t frame, uint64_t frames, do
     double eta = frame + 1 < frames ? elapsed * (double)(frames - frame - 1) / (double)(frame + 1) : 0.0;
     fprintf(stderr, "\r[%.*s%*s] %3d%% frame %llu/%llu, PVS %u, %.0f s left ", done,
             "##############################", width - done, "", (int)(100 * (frame + 1) / frames),
-            (unsigned long long)frame + 1, (unsigned long long)frames, st->current.r.id, eta);
+            (unsigned long long)frame + 1, (unsigned long long)frames, st->pipe.current.r.id, eta);
     if (frame + 1 == frames)
         fputc('\n', stderr);
 }
@@ -267,26 +140,27 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
 {
     const tv_replay_desc* d = st->d;
     double cpu_s = d->cpu_ms * 1e-3;
+    double frame_s = 1.0 / st->sim.desc.display_rate_hz;
     double wall0 = tv_now_ms();
-    for (uint64_t k = 0; k < frames; k++) {
+    /* a signal stops the run between frames: every row written is complete */
+    for (uint64_t k = 0; k < frames && !tv_interrupted(); k++) {
         double t_frame = hmd_display_time(&st->sim, k);
         double t_submit = t_frame + cpu_s;
         /* late latching: the pose is the newest sample at submit time;
          * without it, the newest at the frame's start */
         feed_samples(st, d->no_late_latch ? t_frame : t_submit);
-        pred_pose head = st->latched;
+        pred_pose head = st->pipe.last;
         feed_samples(st, t_submit);
-        track_horizons(st, t_submit);
+        tv_pvs_pipeline_track(&st->pipe, t_submit);
 
-        tv_pvs_result r;
-        int polled = tv_worker_poll(st->worker, t_submit, &r, err, err_size);
-        if (polled < 0 || (polled == 1 && !adopt(st, &r, err, err_size)))
+        int stepped = tv_pvs_pipeline_step(&st->pipe, t_submit, frame_s, true, err, err_size);
+        if (stepped < 0)
             return false;
-        if (!tv_worker_busy(st->worker) && !submit_request(st, t_submit, false, err, err_size))
-            return false;
+        if (stepped == 1)
+            log_pvs(st);
 
         pred_pose predicted_head;
-        predicted_at(&st->current, t_submit, &predicted_head);
+        tv_pvs_pipeline_predicted(&st->pipe, t_submit, &predicted_head);
         tv_replay_log_prediction(st->log, pred_vec3_dist(head.p, predicted_head.p),
                                  pred_quat_angle_deg(head.q, predicted_head.q));
         /* coverage is cheap geometry: every display frame, whatever --every says */
@@ -295,7 +169,7 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
         hmd_eye_poses(&st->sim, &head, eyes);
         bool covered = true;
         for (int e = 0; e < 2; e++)
-            covered &= pred_viewcell_contains(&st->current.r.vc, eyes[e].p, eyes[e].q,
+            covered &= pred_viewcell_contains(&st->pipe.current.r.vc, eyes[e].p, eyes[e].q,
                                               d->viewcell.display_fov_h_deg, st->eye_fov_v, &why[e]);
         tv_replay_log_coverage(st->log, covered);
         bool render = k % (uint64_t)d->every == 0;
@@ -316,25 +190,18 @@ static bool setup(replay_state* st, char* err, size_t err_size)
     const tv_replay_desc* d = st->d;
     size_t pixels = (size_t)d->width * d->height;
     hmd_sim_init(&st->sim, &d->hmd, &st->path);
-    pred_predictor_init(&st->predictor, &d->predictor);
-    if (!pred_error_tracker_init(&st->tracker, &(pred_error_tracker_desc){0})) {
-        snprintf(err, err_size, "prediction error tracker: out of memory");
-        return false;
-    }
     st->eye_fov_v = rnd_fov_y_from_x(d->viewcell.display_fov_h_deg, (float)d->width / (float)d->height);
-    st->method = pvs_method_create(&d->method, st->s.ctx, &st->s.scene, st->s.gpu, err, err_size);
-    if (!st->method)
+    tv_pvs_pipeline_desc pd = {.method = d->method, .predictor = d->predictor, .viewcell = d->viewcell,
+                               .latency_model = d->latency_model, .latency_s = d->latency_s,
+                               .latency_factor = d->latency_factor};
+    if (!tv_pvs_pipeline_start(&st->pipe, &pd, st->s.ctx, &st->s.scene, st->s.gpu, err, err_size))
         return false;
-    tv_worker_desc wd = {.compute = compute_pvs, .user = st->method, .stats_size = sizeof(pvs_method_stats),
-                         .extra_size = sizeof(pvs_request), .model = d->latency_model,
-                         .fixed_latency_s = d->latency_s, .factor = d->latency_factor};
-    tv_worker_describe(&wd, st->latency_name, sizeof st->latency_name);
-    st->worker = tv_worker_start(&wd, err, err_size);
     st->target = rnd_target_create(st->s.ctx, d->width, d->height, err, err_size);
     st->rgba_full = malloc(pixels * 4);
     st->rgba_pvs = malloc(pixels * 4);
     st->ids_full = malloc(pixels * sizeof(uint32_t));
-    if (!st->worker || !st->target || !st->rgba_full || !st->rgba_pvs || !st->ids_full ||
+    st->ssim_scratch = malloc(rnd_ssim_scratch_count(d->width, d->height) * sizeof(double));
+    if (!st->target || !st->rgba_full || !st->rgba_pvs || !st->ids_full || !st->ssim_scratch ||
         !tv_worst_frame_init(&st->worst, d->width, d->height)) {
         if (!err[0])
             snprintf(err, err_size, "out of memory");
@@ -354,28 +221,22 @@ static bool first_pvs(replay_state* st, char* err, size_t err_size)
     double t0 = hmd_display_time(&st->sim, 0) + st->d->cpu_ms * 1e-3;
     st->have_sample = hmd_sim_next(&st->sim, &st->sample);
     feed_samples(st, t0);
-    int computes = st->d->latency_model == TV_LATENCY_MEASURED ? 2 : 1;
-    for (int i = 0; i < computes; i++) {
-        tv_pvs_result r;
-        if (!submit_request(st, t0, true, err, err_size) || tv_worker_wait(st->worker, &r, err, err_size) != 1 ||
-            !adopt(st, &r, err, err_size))
-            return false;
-    }
+    if (!tv_pvs_pipeline_first(&st->pipe, t0, 1.0 / st->sim.desc.display_rate_hz, err, err_size))
+        return false;
+    log_pvs(st);
     return true;
 }
 
 static void teardown(replay_state* st)
 {
-    tv_worker_stop(st->worker);
-    pvs_method_destroy(st->method);
-    slot_release(&st->current);
+    tv_pvs_pipeline_stop(&st->pipe);
     if (st->target)
         rnd_target_destroy(st->s.ctx, st->target);
     free(st->rgba_full);
     free(st->rgba_pvs);
     free(st->ids_full);
+    free(st->ssim_scratch);
     tv_worst_frame_free(&st->worst);
-    pred_error_tracker_free(&st->tracker);
 }
 
 int tv_replay_run(const tv_replay_desc* d)
@@ -384,33 +245,27 @@ int tv_replay_run(const tv_replay_desc* d)
     replay_state st;
     memset(&st, 0, sizeof st);
     st.d = d;
-    st.latency_est_s = d->latency_model == TV_LATENCY_FIXED ? d->latency_s : 0.05;
     double wall0 = tv_now_ms();
-    if (!tv_mkdirs(d->out_dir)) {
-        fprintf(stderr, "trimvr replay: error: %s: cannot create the output folder\n", d->out_dir);
-        return 1;
-    }
-    if (!pred_path_load(d->path, &st.path, err, sizeof err)) {
-        fprintf(stderr, "trimvr replay: error: %s\n", err);
-        return 1;
-    }
-    const char* spec = d->scene ? d->scene : st.path.scene;
-    if (!spec[0]) {
-        fprintf(stderr, "trimvr replay: error: %s has no '# scene:' line; pass --scene\n", d->path);
-        pred_path_free(&st.path);
-        return 2;
-    }
-    if (!tv_app_scene_open("replay", spec, &st.s)) {
+    const char* spec;
+    int status = tv_app_load_path(d->path, d->scene, &st.path, &spec);
+    if (status != 0)
+        return status;
+    if (!tv_app_scene_open_out(spec, d->out_dir, &st.s)) {
         pred_path_free(&st.path);
         return 1;
     }
+    tv_replay_remove_outputs(d->out_dir);
+    tv_interrupt_install();
     bool ok = setup(&st, err, sizeof err) && first_pvs(&st, err, sizeof err);
     uint64_t frames = hmd_display_frame_count(&st.sim);
     if (d->max_frames && d->max_frames < frames)
         frames = d->max_frames;
     ok = ok && run_loop(&st, frames, err, sizeof err);
     if (!ok)
-        fprintf(stderr, "trimvr replay: error: %s\n", err);
+        tv_log(TV_LOG_ERROR, "%s", err);
+    int sig = tv_interrupted();
+    if (sig && d->progress)
+        fputc('\n', stderr); /* end the progress bar's line */
     if (st.log) {
         tv_replay_meta meta = {
             .scene = spec,
@@ -418,29 +273,33 @@ int tv_replay_run(const tv_replay_desc* d)
             .method = pvs_method_name(d->method.kind),
             .predictor = pred_kind_name(d->predictor.kind),
             .policy = d->viewcell.policy == PRED_POLICY_FIXED ? "fixed" : "adaptive",
-            .latency_model = st.latency_name,
+            .latency_model = st.pipe.latency_name,
             .scene_tris = st.s.scene.triangle_count,
             .width = d->width,
             .height = d->height,
             .eye_fov_deg = d->viewcell.display_fov_h_deg,
             .display_frames = frames,
             .wall_s = (tv_now_ms() - wall0) * 1e-3,
+            .interrupted = sig != 0,
         };
         char ferr[512] = "";
         if (!tv_replay_log_finish(st.log, d->out_dir, &meta, ok ? stdout : NULL, ferr, sizeof ferr)) {
-            fprintf(stderr, "trimvr replay: error: %s\n", ferr);
+            tv_log(TV_LOG_ERROR, "%s", ferr);
             ok = false;
         }
         if (ok && !tv_worst_frame_write(&st.worst, d->out_dir, ferr, sizeof ferr)) {
-            fprintf(stderr, "trimvr replay: error: %s\n", ferr);
+            tv_log(TV_LOG_ERROR, "%s", ferr);
             ok = false;
         }
-        if (ok && d->plots)
+        if (ok && d->plots && !sig)
             tv_replay_plots(d->out_dir);
     }
+    if (ok && sig)
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d: %s/summary.json (\"interrupted\": true) and frames.csv hold "
+               "the frames evaluated so far", sig, d->out_dir);
     teardown(&st);
-    if (!tv_app_scene_close("replay", &st.s))
+    if (!tv_app_scene_close(&st.s))
         ok = false;
     pred_path_free(&st.path);
-    return ok ? 0 : 1;
+    return !ok ? 1 : sig ? tv_interrupt_status(sig) : 0;
 }

@@ -1,5 +1,6 @@
 #include "replay_log.h"
 
+#include "json.h"
 #include "stats.h"
 
 #include <math.h>
@@ -29,7 +30,7 @@ static bool series_push(series* s, double x)
 struct tv_replay_log {
     FILE* csv;
     char csv_name[4200];
-    series psnr, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
+    series psnr, ssim, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
     uint64_t rows, misses, identical, coverage_frames, omni_pvs, clamped_pvs;
     double sum_mse;
 };
@@ -38,7 +39,7 @@ static const char* k_header =
     "frame,t,eye,px,py,pz,qx,qy,qz,qw,pose_age_ms,"
     "pred_px,pred_py,pred_pz,pred_qx,pred_qy,pred_qz,pred_qw,pred_err_pos_m,pred_err_rot_deg,pred_horizon_ms,"
     "delta_m,fov_pvs_deg,pvs_id,pvs_age_ms,inside_viewcell,miss_reason,pvs_tris,pvs_fraction,"
-    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,rendered,pvs_frusta\n";
+    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,ssim,rendered,pvs_frusta\n";
 
 tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size)
 {
@@ -63,12 +64,12 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
 {
     const pred_pose* p = &r->pose;
     const pred_pose* q = &r->predicted;
-    /* psnr_db,fn_pixels,diff_pixels and the two render times: empty on a coverage-only row */
-    char image[160] = ",,", render[64] = ",";
+    /* psnr_db,fn_pixels,diff_pixels, the two render times and ssim: empty on a coverage-only row */
+    char image[160] = ",,", render[96] = ",,";
     if (r->rendered) {
         snprintf(image, sizeof image, "%.3f,%llu,%llu", isinf(r->psnr_db) ? INFINITY : r->psnr_db,
                  (unsigned long long)r->fn_pixels, (unsigned long long)r->diff_pixels);
-        snprintf(render, sizeof render, "%.3f,%.3f", r->render_pvs_ms, r->render_full_ms);
+        snprintf(render, sizeof render, "%.3f,%.3f,%.6f", r->render_pvs_ms, r->render_full_ms, r->ssim);
     }
     int n = fprintf(log->csv,
                     "%llu,%.6f,%s,%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.3f,"
@@ -90,6 +91,8 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
         log->identical++;
     else
         log->sum_mse += 255.0 * 255.0 / pow(10.0, r->psnr_db / 10.0);
+    if (!isnan(r->ssim) && !series_push(&log->ssim, r->ssim))
+        return false;
     return series_push(&log->psnr, r->psnr_db) && series_push(&log->fn, (double)r->fn_pixels) &&
            series_push(&log->pvs_fraction, r->pvs_fraction) && series_push(&log->delta, r->delta_m) &&
            series_push(&log->fov, r->fov_pvs_deg) && series_push(&log->render_full, r->render_full_ms) &&
@@ -120,20 +123,11 @@ double tv_replay_log_worst_psnr(const tv_replay_log* log)
     return tv_percentile(log->psnr.v, log->psnr.n, 0.0);
 }
 
-/* JSON has no infinity: identical images are written as null and counted separately */
-static void json_number(FILE* f, const char* key, double v, bool last)
-{
-    if (isfinite(v))
-        fprintf(f, "  \"%s\": %.6g%s\n", key, v, last ? "" : ",");
-    else
-        fprintf(f, "  \"%s\": null%s\n", key, last ? "" : ",");
-}
-
 static void free_series(tv_replay_log* log)
 {
-    series* all[] = {&log->psnr,        &log->fn,         &log->pvs_fraction, &log->delta,
-                     &log->fov,         &log->render_full, &log->render_pvs,  &log->pvs_ms,
-                     &log->pred_pos,    &log->pred_rot,   &log->pose_age};
+    series* all[] = {&log->psnr,       &log->ssim,        &log->fn,         &log->pvs_fraction,
+                     &log->delta,      &log->fov,         &log->render_full, &log->render_pvs,
+                     &log->pvs_ms,     &log->pred_pos,    &log->pred_rot,   &log->pose_age};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
         free(all[i]->v);
 }
@@ -142,7 +136,7 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
                           size_t err_size)
 {
     struct {
-        double psnr_mean, psnr_min, psnr_p5, fn_mean, fn_max, pvs_fraction, delta, fov, pvs_ms, pvs_ms_median,
+        double psnr_mean, psnr_min, psnr_p5, ssim_mean, ssim_p5, fn_mean, fn_max, pvs_fraction, delta, fov, pvs_ms, pvs_ms_median,
             full_ms, pvs_render_ms, pred_pos_p99, pred_rot_p99, pose_age;
     } sm = {
         /* PSNR of the mean squared error: identical frames (PSNR +inf) count as zero error */
@@ -151,6 +145,8 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
                                           : INFINITY,
         .psnr_min = tv_percentile(log->psnr.v, log->psnr.n, 0.0),
         .psnr_p5 = tv_percentile(log->psnr.v, log->psnr.n, 5.0),
+        .ssim_mean = tv_mean(log->ssim.v, log->ssim.n),
+        .ssim_p5 = tv_percentile(log->ssim.v, log->ssim.n, 5.0),
         .fn_mean = tv_mean(log->fn.v, log->fn.n),
         .fn_max = tv_percentile(log->fn.v, log->fn.n, 100.0),
         .pvs_fraction = tv_mean(log->pvs_fraction.v, log->pvs_fraction.n),
@@ -177,29 +173,33 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(f, "  \"scene_tris\": %u,\n  \"width\": %u,\n  \"height\": %u,\n", m->scene_tris, m->width, m->height);
         fprintf(f, "  \"eye_fov_deg\": %.3f,\n", m->eye_fov_deg);
         fprintf(f, "  \"display_frames\": %llu,\n", (unsigned long long)m->display_frames);
+        fprintf(f, "  \"interrupted\": %s,\n", m->interrupted ? "true" : "false");
         fprintf(f, "  \"frames\": %llu,\n", (unsigned long long)log->rows);
         fprintf(f, "  \"identical_frames\": %llu,\n", (unsigned long long)log->identical);
-        json_number(f, "psnr_mean_db", sm.psnr_mean, false);
-        json_number(f, "psnr_min_db", sm.psnr_min, false);
-        json_number(f, "psnr_p5_db", sm.psnr_p5, false);
-        json_number(f, "fn_pixels_mean", sm.fn_mean, false);
-        json_number(f, "fn_pixels_max", sm.fn_max, false);
         fprintf(f, "  \"coverage_frames\": %llu,\n", (unsigned long long)log->coverage_frames);
         fprintf(f, "  \"viewcell_miss_frames\": %llu,\n", (unsigned long long)log->misses);
-        json_number(f, "pvs_fraction_mean", sm.pvs_fraction, false);
-        json_number(f, "delta_mean_m", sm.delta, false);
-        json_number(f, "fov_pvs_mean_deg", sm.fov, false);
         fprintf(f, "  \"pvs_count\": %zu,\n", log->pvs_ms.n);
         fprintf(f, "  \"omni_pvs_count\": %llu,\n", (unsigned long long)log->omni_pvs);
         fprintf(f, "  \"clamped_pvs_count\": %llu,\n", (unsigned long long)log->clamped_pvs);
-        json_number(f, "pvs_ms_mean", sm.pvs_ms, false);
-        json_number(f, "pvs_ms_median", sm.pvs_ms_median, false);
-        json_number(f, "render_full_ms_mean", sm.full_ms, false);
-        json_number(f, "render_pvs_ms_mean", sm.pvs_render_ms, false);
-        json_number(f, "pred_err_pos_p99_m", sm.pred_pos_p99, false);
-        json_number(f, "pred_err_rot_p99_deg", sm.pred_rot_p99, false);
-        json_number(f, "pose_age_ms_mean", sm.pose_age, false);
-        json_number(f, "wall_s", m->wall_s, true);
+        const struct {
+            const char* key;
+            double v;
+        } nums[] = {
+            {"psnr_mean_db", sm.psnr_mean},          {"psnr_min_db", sm.psnr_min},
+            {"psnr_p5_db", sm.psnr_p5},              {"ssim_mean", sm.ssim_mean},
+            {"ssim_p5", sm.ssim_p5},                 {"fn_pixels_mean", sm.fn_mean},
+            {"fn_pixels_max", sm.fn_max},            {"pvs_fraction_mean", sm.pvs_fraction},
+            {"delta_mean_m", sm.delta},              {"fov_pvs_mean_deg", sm.fov},
+            {"pvs_ms_mean", sm.pvs_ms},              {"pvs_ms_median", sm.pvs_ms_median},
+            {"render_full_ms_mean", sm.full_ms},     {"render_pvs_ms_mean", sm.pvs_render_ms},
+            {"pred_err_pos_p99_m", sm.pred_pos_p99}, {"pred_err_rot_p99_deg", sm.pred_rot_p99},
+            {"pose_age_ms_mean", sm.pose_age},       {"wall_s", m->wall_s},
+        };
+        size_t count = sizeof nums / sizeof nums[0];
+        for (size_t i = 0; i < count; i++) {
+            fputs("  ", f);
+            tv_json_num(f, nums[i].key, nums[i].v, i + 1 < count ? ",\n" : "\n");
+        }
         fprintf(f, "}\n");
         ok = fclose(f) == 0;
     }
@@ -214,6 +214,7 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
                 (unsigned long long)log->rows, (unsigned long long)m->display_frames,
                 (unsigned long long)log->identical);
         fprintf(table, " PSNR mean / p5 / min  %8.2f / %.2f / %.2f dB\n", sm.psnr_mean, sm.psnr_p5, sm.psnr_min);
+        fprintf(table, " SSIM mean / p5        %8.4f / %.4f\n", sm.ssim_mean, sm.ssim_p5);
         fprintf(table, " FN pixels mean / max  %8.2f / %.0f\n", sm.fn_mean, sm.fn_max);
         fprintf(table, " viewcell misses       %8llu of %llu display frames (every frame checked)\n",
                 (unsigned long long)log->misses, (unsigned long long)log->coverage_frames);

@@ -33,7 +33,8 @@ typedef struct tv_frame_row {
     uint64_t diff_pixels;    /* pixels whose colour differs at all */
     double pvs_compute_ms;   /* wall clock of the PVS on the worker */
     double render_pvs_ms, render_full_ms;
-    bool rendered;           /* false: a coverage-only row, the image columns are empty */
+    double ssim;             /* mean SSIM, PVS render against full render (eval/ssim.h); NaN: image under 11 px */
+    bool rendered;           /* false: a coverage-only row, the image columns (and ssim) are empty */
     int pvs_frusta;          /* frusta of the PVS's viewcell (1, or 6 for every direction) */
 } tv_frame_row;
 
@@ -68,6 +69,7 @@ typedef struct tv_replay_meta {
     double eye_fov_deg;
     uint64_t display_frames;
     double wall_s;
+    bool interrupted; /* stopped by a signal: frames < the frames asked for */
 } tv_replay_meta;
 
 /* Writes DIR/summary.json and prints the one-screen table to `table`

@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "replay_plots.h"
 
+#include "gnuplot.h"
 #include "image_io.h"
 #include "log.h"
 
@@ -46,6 +47,22 @@ void tv_worst_frame_offer(tv_worst_frame* w, double psnr_db, uint64_t frame, int
         w->fn[i] = full_ids[i] < triangle_count && !tri_in_set[full_ids[i]];
 }
 
+/* Every file a replay writes: the log, the worst frame's images (in this
+ * order, which tv_worst_frame_write relies on), the plot script and plots. */
+static const char* const k_outputs[] = {
+    "frames.csv",    "summary.json",   "worst_full.png",   "worst_pvs.png",      "worst_diff.png",
+    "plots.gp",      "plot_psnr.png",  "plot_fn_pixels.png", "plot_pvs_size.png", "plot_delta.png",
+    "plot_prediction_error.png", "plot_timings.png"};
+
+void tv_replay_remove_outputs(const char* dir)
+{
+    char name[4200];
+    for (size_t i = 0; i < sizeof k_outputs / sizeof k_outputs[0]; i++) {
+        snprintf(name, sizeof name, "%s/%s", dir, k_outputs[i]);
+        remove(name); /* absent is the usual case */
+    }
+}
+
 bool tv_worst_frame_write(const tv_worst_frame* w, const char* dir, char* err, size_t err_size)
 {
     if (!w->have)
@@ -77,7 +94,7 @@ bool tv_worst_frame_write(const tv_worst_frame* w, const char* dir, char* err, s
     }
     char name[4200];
     bool ok = true;
-    const char* files[3] = {"worst_full.png", "worst_pvs.png", "worst_diff.png"};
+    const char* const* files = k_outputs + 2;
     const uint8_t* images[3] = {w->full, w->pvs, diff};
     const uint32_t channels[3] = {4, 4, 3};
     for (int k = 0; k < 3 && ok; k++) {
@@ -96,28 +113,6 @@ bool tv_worst_frame_write(const tv_worst_frame* w, const char* dir, char* err, s
 enum { COL_T = 2, COL_POSE_AGE = 11, COL_PRED_POS = 19, COL_PRED_ROT = 20, COL_DELTA = 22, COL_FOV = 23,
        COL_INSIDE = 26, COL_PVS_FRACTION = 29, COL_PSNR = 30, COL_FN = 31, COL_PVS_MS = 33,
        COL_RENDER_PVS = 34, COL_RENDER_FULL = 35 };
-
-FILE* tv_gnuplot_begin(const char* dir, const char* name, const char* writer)
-{
-    char script[4200];
-    snprintf(script, sizeof script, "%s/%s", dir, name);
-    FILE* f = fopen(script, "w");
-    if (!f)
-        tv_log(TV_LOG_WARN, "%s: cannot write the plot script", script);
-    else
-        fprintf(f, "# gnuplot script written by %s; run: gnuplot %s (in this folder)\n", writer, name);
-    return f;
-}
-
-void tv_gnuplot_finish(FILE* f, const char* dir, const char* name, const char* kept)
-{
-    fclose(f);
-    char cmd[8600];
-    snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot %s 2>/dev/null", dir, name);
-    if (system(cmd) != 0)
-        tv_log(TV_LOG_WARN, "gnuplot failed or is not installed: no plots (run scripts/setup.sh); %s are complete",
-               kept);
-}
 
 void tv_replay_plots(const char* dir)
 {

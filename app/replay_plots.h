@@ -34,12 +34,10 @@ void tv_worst_frame_offer(tv_worst_frame* w, double psnr_db, uint64_t frame, int
  * pixels pure red). Nothing is written when no frame was offered. */
 bool tv_worst_frame_write(const tv_worst_frame* w, const char* dir, char* err, size_t err_size);
 
-/* A gnuplot script DIR/NAME, opened for writing with its header comment
- * (`writer`, e.g. "trimvr replay"); NULL (warned) when it cannot be written.
- * tv_gnuplot_finish closes it and runs gnuplot in DIR; a missing or failing
- * gnuplot is a warning ending with `kept`, what is complete without plots. */
-FILE* tv_gnuplot_begin(const char* dir, const char* name, const char* writer);
-void tv_gnuplot_finish(FILE* f, const char* dir, const char* name, const char* kept);
+/* Removes what an earlier replay wrote into DIR (frames.csv, summary.json,
+ * plots, worst-frame images), so that a run never leaves its outputs mixed
+ * with an older run's. */
+void tv_replay_remove_outputs(const char* dir);
 
 /* Plots DIR/frames.csv into DIR/plot_*.png with gnuplot. A missing gnuplot is
  * reported as a warning, not a failure: the log and summary are the results. */

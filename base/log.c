@@ -7,6 +7,7 @@
 static tv_log_sink g_sink;
 static void* g_sink_user;
 static int g_level = -1; /* -1: not yet read from the environment */
+static char g_program[64] = "trimvr";
 
 static const char* level_name(tv_log_level level)
 {
@@ -22,6 +23,11 @@ void tv_log_set_sink(tv_log_sink sink, void* user)
 {
     g_sink = sink;
     g_sink_user = user;
+}
+
+void tv_log_set_program(const char* name)
+{
+    snprintf(g_program, sizeof g_program, "%s", name ? name : "trimvr");
 }
 
 void tv_log_set_level(tv_log_level level) { g_level = (int)level; }
@@ -46,7 +52,7 @@ void tv_logv(tv_log_level level, const char* fmt, va_list args)
         return;
     }
     /* one fprintf per line so lines from different threads do not interleave */
-    fprintf(stderr, "trimvr: %s: %s\n", level_name(level), message);
+    fprintf(stderr, "%s: %s: %s\n", g_program, level_name(level), message);
 }
 
 void tv_log(tv_log_level level, const char* fmt, ...)

@@ -22,7 +22,7 @@ void hmd_sim_init(hmd_sim* sim, const hmd_desc* desc, const pred_path* path)
     sim->desc = d;
     sim->path = path;
     sim->next_index = 0;
-    pred_rng_seed(&sim->rng, d.seed, 0x686d64ull);
+    tv_rng_seed(&sim->rng, d.seed, 0x686d64ull);
 }
 
 bool hmd_sim_next(hmd_sim* sim, pred_pose* sample)
@@ -37,7 +37,7 @@ bool hmd_sim_next(hmd_sim* sim, pred_pose* sample)
      * every other component, stays the same when one noise term is changed */
     double g[7];
     for (int i = 0; i < 7; i++)
-        g[i] = pred_rng_gauss(&sim->rng);
+        g[i] = tv_rng_gauss(&sim->rng);
     double t = nominal + g[0] * d->jitter_ms * 1e-3;
     pred_path_sample(sim->path, t, sample);
     for (int i = 0; i < 3; i++)

@@ -36,7 +36,7 @@ typedef struct hmd_desc {
 typedef struct hmd_sim {
     hmd_desc desc; /* defaults resolved */
     const pred_path* path;
-    pred_rng rng;
+    tv_rng rng;
     uint64_t next_index;
 } hmd_sim;
 

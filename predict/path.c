@@ -118,6 +118,10 @@ static bool _parse(char* text, pred_path* out, const char* file, char* err, size
                 return false;
             continue;
         }
+        if (!cursor)
+            return pred_text_fail(err, err_size, file, line_no,
+                                  "last line has no newline (was the file cut short?); end the file with a newline "
+                                  "if the line is complete");
         double v[COL_COUNT];
         if (!_parse_row(s, field_col, field_count, v, file, line_no, err, err_size))
             return false;
@@ -125,6 +129,10 @@ static bool _parse(char* text, pred_path* out, const char* file, char* err, size
                            v[COL_QW] * v[COL_QW]);
         if (norm < 0.5 || norm > 2.0)
             return pred_text_fail(err, err_size, file, line_no, "quaternion norm %g is not near 1", norm);
+        for (int i = 0; i < 3; i++)
+            if (fabs(v[COL_PX + i]) > PRED_PATH_MAX_COORD_M)
+                return pred_text_fail(err, err_size, file, line_no, "position %g in column %s is beyond %g m",
+                                      v[COL_PX + i], k_columns[COL_PX + i], PRED_PATH_MAX_COORD_M);
         if (out->count) {
             double prev_t = out->poses[out->count - 1].t;
             if (v[COL_T] == prev_t)

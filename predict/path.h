@@ -25,6 +25,10 @@ typedef struct pred_path {
     char description[256]; /* from "# description:", empty when absent */
 } pred_path;
 
+/* Positions beyond this many metres from the origin are refused: the
+ * renderer's float coordinates have no centimetres left there. */
+#define PRED_PATH_MAX_COORD_M 1e6
+
 /* Loads `file` into `out` (zeroed first). On failure returns false, leaves
  * `out` empty and writes one line "FILE:LINE: problem" (or "FILE: problem"
  * when no line applies) into err. At least one sample is required. */

@@ -6,18 +6,13 @@
 /* "sponza" names $TRIMVR_SHARED/scenes/sponza_lod4/sponza_s_lod4.glb (docs/paths.md) */
 #define SPONZA "sponza"
 
-/* Runs: bigger bob at a higher step rate, and
- * fewer, smaller look-arounds than walks (runners watch where they go). */
-#define RUN_GAIT .speed = 3.0, .step_frequency = 2.8, .bob_amplitude = 0.035, \
-                 .look_interval = 7.0, .look_amplitude_deg = 35.0
-
 static const pred_bundled_path k_paths[] = {
     {"city-walk.csv", "walk",
      {.kind = PRED_SYNTH_WALK, .seed = 1, .scene = "builtin:city",
       .description = "walk along street z=0 towards +x, turn left at the x=40 intersection, walk towards +z",
       .waypoint_count = 3, .waypoints = {{12.0, 0.0}, {40.0, 0.0}, {40.0, 20.0}}}},
     {"city-run.csv", "run",
-     {.kind = PRED_SYNTH_WALK, .seed = 2, .scene = "builtin:city", RUN_GAIT, .accel_time = 1.5, .corner_radius = 2.0,
+     {.kind = PRED_SYNTH_WALK, .seed = 2, .scene = "builtin:city", PRED_SYNTH_RUN_GAIT, .accel_time = 1.5, .corner_radius = 2.0,
       .description = "run along street x=0 towards -z, turn right at the origin, run along z=0 towards +x",
       .waypoint_count = 3, .waypoints = {{0.0, 15.0}, {0.0, 0.0}, {35.0, 0.0}}}},
     {"city-lookaround.csv", "look-around",
@@ -30,7 +25,7 @@ static const pred_bundled_path k_paths[] = {
                      "x=-6 z=+6.5, turn around, back out and on along the corridor",
       .waypoint_count = 5, .waypoints = {{-20.0, 0.0}, {-6.0, 0.0}, {-6.0, 6.5}, {-6.0, 0.0}, {10.0, 0.0}}}},
     {"interior-run.csv", "run",
-     {.kind = PRED_SYNTH_WALK, .seed = 5, .scene = "builtin:interior", RUN_GAIT, .accel_time = 1.5,
+     {.kind = PRED_SYNTH_WALK, .seed = 5, .scene = "builtin:interior", PRED_SYNTH_RUN_GAIT, .accel_time = 1.5,
       .description = "run the corridor's centreline towards +x",
       .waypoint_count = 2, .waypoints = {{-22.0, 0.0}, {22.0, 0.0}}}},
     {"interior-lookaround.csv", "look-around",
@@ -43,7 +38,7 @@ static const pred_bundled_path k_paths[] = {
       .corner_radius = 1.25, .waypoint_count = 6,
       .waypoints = {{-9.5, -1.4}, {9.5, -1.4}, {9.5, 1.1}, {-9.5, 1.1}, {-9.5, -1.4}, {-3.5, -1.4}}}},
     {"sponza-run.csv", "run",
-     {.kind = PRED_SYNTH_WALK, .seed = 8, .scene = SPONZA, RUN_GAIT, .accel_time = 0.8,
+     {.kind = PRED_SYNTH_WALK, .seed = 8, .scene = SPONZA, PRED_SYNTH_RUN_GAIT, .accel_time = 0.8,
       .description = "shuttle run along the atrium's long axis: run, stop, turn, run back",
       .waypoint_count = 3, .waypoints = {{-9.5, -0.3}, {11.0, -0.3}, {-9.5, -0.3}}}},
     {"sponza-lookaround.csv", "look-around",

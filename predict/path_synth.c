@@ -283,9 +283,9 @@ static void _push_move(_synth* s, _move m)
 
 /* Minimum-jerk move from `from` to `to` (yaw, pitch; radians) at a peak rate in
  * the configured range; returns its duration. */
-static double _add_sweep(_synth* s, pred_rng* rng, double t0, const double from[2], const double to[2])
+static double _add_sweep(_synth* s, tv_rng* rng, double t0, const double from[2], const double to[2])
 {
-    double rate = pred_rng_range(rng, s->d.peak_rate_min_deg, s->d.peak_rate_max_deg) * PRED_DEG;
+    double rate = tv_rng_range(rng, s->d.peak_rate_min_deg, s->d.peak_rate_max_deg) * PRED_DEG;
     double angle = hypot(to[0] - from[0], to[1] - from[1]);
     double dur = fmax(0.15, 1.875 * angle / rate);
     _push_move(s, (_move){t0, dur, {from[0], from[1]}, {to[0], to[1]}});
@@ -293,39 +293,39 @@ static double _add_sweep(_synth* s, pred_rng* rng, double t0, const double from[
 }
 
 /* Walk look-arounds: turn away, hold, turn back; the offsets add to the walking yaw. */
-static void _plan_walk_looks(_synth* s, pred_rng* rng)
+static void _plan_walk_looks(_synth* s, tv_rng* rng)
 {
     const pred_synth_desc* d = &s->d;
     if (d->look_amplitude_deg <= 0.0)
         return;
     const double zero[2] = {0.0, 0.0};
-    double t = pred_rng_range(rng, 0.5, 1.5) * d->look_interval;
+    double t = tv_rng_range(rng, 0.5, 1.5) * d->look_interval;
     while (t < s->duration) {
-        double sign = pred_rng_uniform(rng) < 0.5 ? -1.0 : 1.0;
-        double away[2] = {sign * pred_rng_range(rng, 0.5, 1.0) * d->look_amplitude_deg * PRED_DEG,
-                          pred_rng_range(rng, -15.0, 10.0) * PRED_DEG};
+        double sign = tv_rng_uniform(rng) < 0.5 ? -1.0 : 1.0;
+        double away[2] = {sign * tv_rng_range(rng, 0.5, 1.0) * d->look_amplitude_deg * PRED_DEG,
+                          tv_rng_range(rng, -15.0, 10.0) * PRED_DEG};
         t += _add_sweep(s, rng, t, zero, away) + d->look_hold;
         t += _add_sweep(s, rng, t, away, zero);
-        t += pred_rng_range(rng, 0.5, 1.5) * d->look_interval;
+        t += tv_rng_range(rng, 0.5, 1.5) * d->look_interval;
     }
 }
 
-static void _plan_lookaround(_synth* s, pred_rng* rng)
+static void _plan_lookaround(_synth* s, tv_rng* rng)
 {
     const pred_synth_desc* d = &s->d;
     double cur[2] = {0.0, 0.0};
-    double t = pred_rng_range(rng, 0.3, 0.8);
+    double t = tv_rng_range(rng, 0.3, 0.8);
     while (t < s->duration) {
         double to[2];
         /* sweeps of at least 40 degrees (or half the range): small corrections are not what
          * stresses a predictor; from any yaw in range, half of the targets qualify */
         double min_sweep = fmin(40.0, 0.5 * d->yaw_range_deg) * PRED_DEG;
         do
-            to[0] = pred_rng_range(rng, -d->yaw_range_deg, d->yaw_range_deg) * PRED_DEG;
+            to[0] = tv_rng_range(rng, -d->yaw_range_deg, d->yaw_range_deg) * PRED_DEG;
         while (fabs(to[0] - cur[0]) < min_sweep);
-        to[1] = pred_rng_range(rng, d->pitch_min_deg, d->pitch_max_deg) * PRED_DEG;
+        to[1] = tv_rng_range(rng, d->pitch_min_deg, d->pitch_max_deg) * PRED_DEG;
         t += _add_sweep(s, rng, t, cur, to);
-        t += pred_rng_range(rng, d->hold_min, d->hold_max);
+        t += tv_rng_range(rng, d->hold_min, d->hold_max);
         cur[0] = to[0];
         cur[1] = to[1];
     }
@@ -414,8 +414,8 @@ bool pred_path_synth(const pred_synth_desc* desc, pred_path* out, char* err, siz
     if (ok && s->d.kind == PRED_SYNTH_WALK)
         ok = _build_curve(s, err, err_size);
     if (ok) {
-        pred_rng rng;
-        pred_rng_seed(&rng, s->d.seed, 0x7472696d7672ull);
+        tv_rng rng;
+        tv_rng_seed(&rng, s->d.seed, 0x7472696d7672ull);
         if (s->d.kind == PRED_SYNTH_WALK) {
             _plan_walk_looks(s, &rng);
         } else {

@@ -72,6 +72,12 @@ typedef struct pred_synth_desc {
     const char* description; /* copied into the path's description; may be NULL */
 } pred_synth_desc;
 
+/* Designated initialisers of a run (the bundled runs, automatic runs):
+ * 3 m/s, a bigger bob at a higher step rate, and fewer, smaller
+ * look-arounds than walks (runners watch where they go). */
+#define PRED_SYNTH_RUN_GAIT .speed = 3.0, .step_frequency = 2.8, .bob_amplitude = 0.035, \
+                            .look_interval = 7.0, .look_amplitude_deg = 35.0
+
 /* Synthesises a path into `out` (zeroed first; free with pred_path_free).
  * Returns false with a one-line message for invalid input (too few
  * waypoints, repeated waypoints, non-positive speed, ...). */

@@ -29,7 +29,9 @@ char* pred_text_trim(char* s);
 int pred_text_split(char* line, char** fields, int max_fields);
 
 /* Iterates over the lines of a NUL-terminated buffer in place: returns the
- * next line (its '\n' replaced by NUL) and advances *cursor, or NULL at the end. */
+ * next line (its '\n' replaced by NUL) and advances *cursor, or NULL at the
+ * end. *cursor is NULL after a last line without '\n': a file cut short ends
+ * so, and its last field may then be a cut number that still parses. */
 char* pred_text_next_line(char** cursor);
 
 #endif

@@ -1,5 +1,6 @@
 #include "trace_import.h"
 
+#include "log.h"
 #include "text_io.h"
 
 #include <assert.h>
@@ -196,6 +197,13 @@ static bool _parse(import_state* st, char* text, pred_path* out, pred_trace_repo
         char* s = pred_text_trim(line);
         if (*s == '\0')
             continue;
+        if (have_header && !cursor) {
+            /* A recorder killed mid-write leaves such a line; its last number
+             * may be cut and would still parse. */
+            rep->cut_line = line_no;
+            tv_log(TV_LOG_WARN, "%s:%zu: last line has no newline (file cut short?); dropped", st->file, line_no);
+            break;
+        }
         bool ok = have_header ? _row(st, s, line_no, out, rep, err, err_size)
                               : _header(st, s, line_no, err, err_size);
         if (!ok)

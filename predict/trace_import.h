@@ -55,6 +55,7 @@ typedef struct pred_trace_report {
     size_t rows;              /* data rows */
     size_t dropped;           /* rows whose time was not after the previous kept row */
     size_t first_dropped_line; /* 0 when none */
+    size_t cut_line;          /* a last data line without a newline, dropped (logged as a warning): 0 when none */
     size_t gaps;              /* kept intervals longer than gap_s */
     double max_gap_s;         /* longest kept interval */
 } pred_trace_report;

@@ -17,27 +17,9 @@
  * corners lie exactly on the latter and must not be clipped. */
 #define PVS_RASTER_FAR_SCALE 1.01f
 
-static bool finite3(const float v[3])
+float pvs_max_apex_offset(float near_m)
 {
-    return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]);
-}
-
-static bool check_viewcell(const pvs_viewcell* vc, char* err, size_t err_size)
-{
-    vec3 f = {vc->forward[0], vc->forward[1], vc->forward[2]}, u = {vc->up[0], vc->up[1], vc->up[2]}, c;
-    glm_vec3_cross(f, u, c);
-    const char* why = !finite3(vc->v0) || !finite3(vc->forward) || !finite3(vc->up) || !isfinite(vc->delta) ||
-                              !isfinite(vc->far_m)
-                          ? "non-finite value"
-                      : glm_vec3_norm(f) == 0.0f                               ? "zero forward vector"
-                      : glm_vec3_norm(c) <= 1e-6f * glm_vec3_norm(f) * glm_vec3_norm(u) ? "up parallel to forward"
-                      : !(vc->delta >= 0.0f)                                   ? "negative delta"
-                      : !(vc->fov_pvs_deg > 0.0f && vc->fov_pvs_deg < 180.0f) ? "fov_pvs_deg outside (0, 180)"
-                      : !(vc->far_m > 0.0f)                                    ? "far_m <= 0"
-                                                                               : NULL;
-    if (why)
-        snprintf(err, err_size, "pvs_compute: invalid viewcell: %s", why);
-    return why == NULL;
+    return sqrtf(PVS_MAX_DEPTH_STEP_M * near_m * 16777216.0f); /* step = 2^-24 z^2 / near */
 }
 
 /* Vertical FOV of the PVS frustum: fov_pvs_deg spans the smaller axis, so
@@ -53,6 +35,19 @@ static float fov_y_deg(const pvs_context* ctx, const pvs_viewcell* vc)
 static float apex_offset(const pvs_viewcell* vc)
 {
     return vc->delta / tanf(glm_rad(vc->fov_pvs_deg) * 0.5f);
+}
+
+/* The apex offset the depth buffer resolves (pvs.h, PVS_MAX_DEPTH_STEP_M). */
+static bool check_apex_offset(const pvs_context* ctx, const pvs_viewcell* vc, char* err, size_t err_size)
+{
+    float z_max = pvs_max_apex_offset(ctx->near_m);
+    if (apex_offset(vc) <= z_max)
+        return true;
+    snprintf(err, err_size,
+             "pvs_compute: viewcell delta %g m at PVS FOV %g deg is beyond the %g m the PVS depth buffer "
+             "resolves (apex %g m behind v0, at most %g m; docs/pvs-gpu-passes.md)",
+             vc->delta, vc->fov_pvs_deg, z_max * tanf(glm_rad(vc->fov_pvs_deg) * 0.5f), apex_offset(vc), z_max);
+    return false;
 }
 
 /* Far plane from v*: an eye up to 2z ahead of v* sees far_m further. */
@@ -182,11 +177,14 @@ static void draw_indirect(pvs_context* ctx, VkCommandBuffer cmd, int pipe, uint3
 
 typedef enum pass_kind { PASS_CLEAR, PASS_LAYER, PASS_SPILL } pass_kind;
 
-/* One dynamic-rendering pass on visibility buffer `vis` (0 exact, 1 wide):
- * clear only, P2's draws of the current layer (the wide pass draws the
- * faces only, dilated, for the visibility buffer), or the spill draw after
- * P3 (exact; it changes neither attachment: every fragment ties in depth). */
-static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, int vis, pass_kind what)
+/* One dynamic-rendering pass on visibility buffer `vis` (0 exact, 1 wide)
+ * over tile `t`: clear only, P2's draws of the current layer (the wide pass
+ * draws the faces only, dilated, for the visibility buffer), or the spill
+ * draw after P3 (exact; it changes neither attachment: every fragment ties in
+ * depth). The viewport is the whole image's and the tile a scissor, so every
+ * pixel rasterises exactly as without tiling (an offset viewport would round
+ * window coordinates differently and move edges by a subpixel step). */
+static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, int vis, pass_kind what)
 {
     bool clear = what == PASS_CLEAR;
     VkRenderingAttachmentInfo color = {.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
@@ -201,7 +199,7 @@ static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, int vis, pass_kin
                                        .loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
                                        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
                                        .clearValue.depthStencil = {1.0f, 0}};
-    VkRect2D area = {{0, 0}, {ctx->width, ctx->height}};
+    VkRect2D area = {{(int32_t)t->x, (int32_t)t->y}, {t->width, t->height}};
     VkRenderingInfo info = {.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                             .renderArea = area,
                             .layerCount = 1,
@@ -228,12 +226,24 @@ static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, int vis, pass_kin
     vkCmdEndRendering(cmd);
 }
 
-static void reset_buffers(pvs_context* ctx, VkCommandBuffer cmd)
+/* Before each tile: the per-pixel state, the attachments, the view's tile
+ * fields and the region numbering (so that region ids, which break sort ties
+ * in P3, are those of an untiled computation); before the first, also what
+ * accumulates over tiles (triangle flags, statistics). */
+static void reset_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, bool first)
 {
-    const uint32_t zeroed[] = {TV_PVS_BIND_COUNTERS, TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE,
-                               TV_PVS_BIND_ACTIVE, TV_PVS_BIND_TRI_FLAGS, TV_PVS_BIND_LAYER_STATS};
-    for (size_t i = 0; i < sizeof zeroed / sizeof zeroed[0]; i++)
-        vkCmdFillBuffer(cmd, ctx->buffers[zeroed[i]].buffer, 0, VK_WHOLE_SIZE, 0);
+    const uint32_t per_tile[] = {TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE, TV_PVS_BIND_ACTIVE};
+    const uint32_t per_computation[] = {TV_PVS_BIND_COUNTERS, TV_PVS_BIND_TRI_FLAGS, TV_PVS_BIND_LAYER_STATS};
+    barrier(cmd); /* the previous tile's P4 is done with everything rewritten here */
+    for (size_t i = 0; i < 3; i++) {
+        vkCmdFillBuffer(cmd, ctx->buffers[per_tile[i]].buffer, 0, VK_WHOLE_SIZE, 0);
+        if (first)
+            vkCmdFillBuffer(cmd, ctx->buffers[per_computation[i]].buffer, 0, VK_WHOLE_SIZE, 0);
+    }
+    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, TV_PVS_C_REGIONS * sizeof(uint32_t),
+                    sizeof(uint32_t), 0);
+    const uint32_t tile[4] = {t->x, t->y, t->width, t->height};
+    vkCmdUpdateBuffer(cmd, ctx->buffers[TV_PVS_BIND_VIEW].buffer, offsetof(pvs_view_gpu, tile_x), sizeof tile, tile);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_CENTRE_DEPTH].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
     for (int v = 0; v < 2; v++) {
         rnd_image_barrier(cmd, ctx->vis_ids[v].image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -244,13 +254,29 @@ static void reset_buffers(pvs_context* ctx, VkCommandBuffer cmd)
             VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
             VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-        render_pass(ctx, cmd, v, PASS_CLEAR);
+        render_pass(ctx, cmd, t, v, PASS_CLEAR);
     }
     barrier(cmd);
 }
 
-/* Timestamps: one before everything, then one after each of P1, P2, P3 of
- * every layer, one after P4. */
+/* P1's draw counts of layer `l` into its P1 statistics (pvs_layout.glsl). */
+static void copy_draw_counts(pvs_context* ctx, VkCommandBuffer cmd, uint32_t l)
+{
+    const VkDeviceSize dst = (VkDeviceSize)(TV_PVS_LAYER_STATS_STRIDE * l + 1) * 16;
+    const VkBufferCopy regions[3] = {{TV_PVS_C_DRAW_FF * 4, dst, 4},
+                                     {TV_PVS_C_DRAW_BF * 4, dst + 4, 4},
+                                     {TV_PVS_C_DRAW_TRIM * 4, dst + 8, 4}};
+    vkCmdCopyBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, ctx->buffers[TV_PVS_BIND_LAYER_STATS].buffer, 3,
+                    regions);
+}
+
+/* Timestamps: one before everything, then per tile one after each of P1,
+ * P2, P3 of every layer and one after P4. */
+static uint32_t timestamp_count(const pvs_context* ctx)
+{
+    return 1 + pvs_tile_count(&ctx->grid) * (3 * ctx->layers.layer_count + 1);
+}
+
 static bool reserve_timestamps(pvs_context* ctx, uint32_t count, char* err, size_t err_size)
 {
     if (!ctx->rnd->timestamps || count <= ctx->timestamp_capacity)
@@ -274,19 +300,11 @@ static void timestamp(pvs_context* ctx, VkCommandBuffer cmd, uint32_t* index)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ctx->timestamps, (*index)++);
 }
 
-static void record(pvs_context* ctx, VkCommandBuffer cmd)
+/* P1-P3 of every layer and P4, for tile `t`. */
+static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, bool first, uint32_t* ts)
 {
     const pvs_layers* L = &ctx->layers;
-    uint32_t ts = 0;
-    if (ctx->timestamps)
-        vkCmdResetQueryPool(cmd, ctx->timestamps, 0, 3 * L->layer_count + 2);
-    timestamp(ctx, cmd, &ts);
-    reset_buffers(ctx, cmd);
-    VkDescriptorSet sets[2];
-    sets[TV_SET_SCENE] = ctx->gpu->set;
-    sets[TV_PVS_SET] = ctx->set;
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->layout, 0, 2, sets, 0, NULL);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ctx->layout, 0, 2, sets, 0, NULL);
+    reset_tile(ctx, cmd, t, first);
     const VkShaderStageFlags stages =
         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
     for (uint32_t l = 0; l < L->layer_count; l++) {
@@ -299,40 +317,66 @@ static void record(pvs_context* ctx, VkCommandBuffer cmd)
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_CLASSIFY]);
         vkCmdDispatch(cmd, (push.layer_count + TV_WG_SIZE - 1) / TV_WG_SIZE, 1, 1);
         barrier(cmd);
-        timestamp(ctx, cmd, &ts);
-        render_pass(ctx, cmd, 0, PASS_LAYER);
+        if (first) /* every tile classifies the same triangles */
+            copy_draw_counts(ctx, cmd, l);
+        timestamp(ctx, cmd, ts);
+        render_pass(ctx, cmd, t, 0, PASS_LAYER);
         barrier(cmd); /* the dilated pass reads the exact pass's centre depths */
-        render_pass(ctx, cmd, 1, PASS_LAYER);
+        render_pass(ctx, cmd, t, 1, PASS_LAYER);
         barrier(cmd);
-        timestamp(ctx, cmd, &ts);
+        timestamp(ctx, cmd, ts);
         pvs_record_resolve(ctx, cmd);
-        render_pass(ctx, cmd, 0, PASS_SPILL); /* both empty unless P3 asked for them */
-        render_pass(ctx, cmd, 1, PASS_SPILL);
+        render_pass(ctx, cmd, t, 0, PASS_SPILL); /* both empty unless P3 asked for them */
+        render_pass(ctx, cmd, t, 1, PASS_SPILL);
         barrier(cmd);
-        timestamp(ctx, cmd, &ts);
+        timestamp(ctx, cmd, ts);
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_GATHER]);
-    vkCmdDispatch(cmd, (ctx->width + 7) / 8, (ctx->height + 7) / 8, 1);
-    pvs_host_barrier(cmd);
-    timestamp(ctx, cmd, &ts);
+    vkCmdDispatch(cmd, (t->width + 7) / 8, (t->height + 7) / 8, 1);
+    timestamp(ctx, cmd, ts);
 }
 
-/* Per-phase GPU milliseconds from the timestamps of record(). */
+static void record(pvs_context* ctx, VkCommandBuffer cmd)
+{
+    uint32_t ts = 0;
+    if (ctx->timestamps)
+        vkCmdResetQueryPool(cmd, ctx->timestamps, 0, timestamp_count(ctx));
+    timestamp(ctx, cmd, &ts);
+    VkDescriptorSet sets[2];
+    sets[TV_SET_SCENE] = ctx->gpu->set;
+    sets[TV_PVS_SET] = ctx->set;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->layout, 0, 2, sets, 0, NULL);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ctx->layout, 0, 2, sets, 0, NULL);
+    for (uint32_t i = 0; i < pvs_tile_count(&ctx->grid); i++) {
+        pvs_tile t = pvs_tile_get(&ctx->grid, i);
+        record_tile(ctx, cmd, &t, i == 0, &ts);
+    }
+    pvs_host_barrier(cmd);
+}
+
+/* Per-phase GPU milliseconds from the timestamps of record(), per layer and
+ * in total, summed over tiles (each tile's first P1 includes its resets). */
 static void read_timestamps(pvs_context* ctx, pvs_stats* st)
 {
-    uint32_t n = 3 * ctx->layers.layer_count + 2;
+    uint32_t n = timestamp_count(ctx);
     uint64_t* t = malloc(sizeof(uint64_t) * n);
     if (!t || vkGetQueryPoolResults(ctx->rnd->device, ctx->timestamps, 0, n, sizeof(uint64_t) * n, t,
                                     sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) != VK_SUCCESS) {
         free(t);
         return;
     }
-    const double ms = ctx->rnd->props.limits.timestampPeriod * 1e-6;
-    for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
-        for (int p = 0; p < 3; p++)
-            st->ms[1 + p] += (double)(t[1 + 3 * l + p] - t[3 * l + p]) * ms; /* layer 0's P1 includes the resets */
+    const double period_ms = ctx->rnd->props.limits.timestampPeriod * 1e-6;
+    uint32_t i = 1;
+    for (uint32_t tile = 0; tile < pvs_tile_count(&ctx->grid); tile++, i++) {
+        for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+            for (int p = 0; p < 3; p++, i++) {
+                double ms = (double)(t[i] - t[i - 1]) * period_ms;
+                st->ms[1 + p] += ms;
+                ctx->per_layer[l].ms[p] += ms;
+            }
+        }
+        st->ms[4] += (double)(t[i] - t[i - 1]) * period_ms;
     }
-    st->ms[4] = (double)(t[n - 1] - t[n - 2]) * ms;
     free(t);
 }
 
@@ -358,18 +402,31 @@ static bool compact(pvs_context* ctx, pvs_result* out, char* err, size_t err_siz
     return true;
 }
 
+/* Totals and per-layer figures; per-layer ms were read with the timestamps. */
 static void collect_stats(pvs_context* ctx, pvs_stats* st)
 {
     const uint32_t* c = ctx->buffers[TV_PVS_BIND_COUNTERS].mapped;
     const uint32_t* ls = ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped;
-    st->layers = ctx->layers.layer_count;
-    st->layer_triangles = ctx->layers.tri_count;
-    st->silhouettes = c[TV_PVS_C_REGIONS];
+    const pvs_layers* L = &ctx->layers;
+    st->layers = L->layer_count;
+    st->layer_triangles = L->tri_count;
+    st->silhouettes = c[TV_PVS_C_REGIONS]; /* numbered afresh per tile, so one tile's */
     st->overflow_fronts = c[TV_PVS_C_OVERFLOW_FRONTS];
     st->coop_pixels = c[TV_PVS_C_COOP_TOTAL];
+    st->tiles = pvs_tile_count(&ctx->grid);
+    st->per_layer = ctx->per_layer;
     uint64_t seq = 0;
-    for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
-        const uint32_t* s = ls + 4 * l;
+    for (uint32_t l = 0; l < L->layer_count; l++) {
+        const uint32_t* s = ls + 4 * TV_PVS_LAYER_STATS_STRIDE * l; /* P3's, then P1's draw counts */
+        pvs_layer_stats* pl = &ctx->per_layer[l];
+        pl->triangles = L->tri_offsets[l + 1] - L->tri_offsets[l];
+        pl->fronts = s[4] / 3;
+        pl->backs = s[5] / 3;
+        pl->silhouettes = s[6] / 6;
+        pl->kbuffer_bytes_used = s[0];
+        pl->active_pixels = s[1];
+        pl->sequence_entries = s[2];
+        pl->overflow_pixels = s[3];
         st->kbuffer_bytes_used = s[0] > st->kbuffer_bytes_used ? s[0] : st->kbuffer_bytes_used;
         st->active_pixels += s[1];
         seq += s[2];
@@ -384,7 +441,12 @@ bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char
 {
     assert(ctx && vc && out);
     const double start = tv_now_ms();
-    if (!check_viewcell(vc, err, err_size))
+    const char* invalid = pvs_viewcell_invalid(vc);
+    if (invalid) {
+        snprintf(err, err_size, "pvs_compute: invalid viewcell: %s", invalid);
+        return false;
+    }
+    if (!check_apex_offset(ctx, vc, err, err_size))
         return false;
     *out = (pvs_result){0};
     pvs_stats* st = &out->stats;
@@ -399,8 +461,9 @@ bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char
         widest = n > widest ? n : widest;
     }
     if (!pvs_reserve(ctx, widest, L->layer_count, err, err_size) ||
-        !reserve_timestamps(ctx, 3 * L->layer_count + 2, err, err_size))
+        !reserve_timestamps(ctx, timestamp_count(ctx), err, err_size))
         return false;
+    memset(ctx->per_layer, 0, sizeof *ctx->per_layer * L->layer_count);
     memcpy(ctx->buffers[TV_PVS_BIND_LAYER_TRIS].mapped, L->tri_ids, sizeof(uint32_t) * L->tri_count);
     write_view(ctx, vc, &cam, &view);
     st->ms[0] = tv_now_ms() - start;

@@ -14,6 +14,9 @@
 #define PVS_DEFAULT_WIDTH 512u
 #define PVS_DEFAULT_HEIGHT 512u
 #define PVS_DEFAULT_K 16u
+/* The default resolution in one tile: larger images are tiled, and the
+ * per-pixel memory stays what 512 x 512 needs (k-buffers 128 MiB at k = 16). */
+#define PVS_DEFAULT_TILE_PIXELS (512u * 512u)
 #define PVS_DEFAULT_NEAR 0.01f
 /* The paper's N. On a CPU device (lavapipe) the cooperative pass only
  * costs: a workgroup resolves one pixel where a SIMD batch of the per-thread
@@ -40,8 +43,8 @@ static bool create_buffer(pvs_context* ctx, uint32_t binding, VkDeviceSize size,
         return false;
     }
     VkBufferUsageFlags usage = storage;
-    if (binding == TV_PVS_BIND_COUNTERS)
-        usage |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+    if (binding == TV_PVS_BIND_COUNTERS) /* indirect commands; the draw counts are copied into the layer stats */
+        usage |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     rnd_buffer_destroy(ctx->rnd, &ctx->buffers[binding]);
     return rnd_buffer_create(ctx->rnd, size, usage, host_visible(binding), &ctx->buffers[binding], err, err_size);
 }
@@ -85,18 +88,25 @@ bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* er
     }
     if (grow_layers) {
         uint32_t n = layers + layers / 2;
-        if (!create_buffer(ctx, TV_PVS_BIND_LAYER_STATS, (VkDeviceSize)n * 16, err, err_size))
+        if (!create_buffer(ctx, TV_PVS_BIND_LAYER_STATS, (VkDeviceSize)n * 16 * TV_PVS_LAYER_STATS_STRIDE, err,
+                           err_size))
             return false;
+        pvs_layer_stats* per_layer = realloc(ctx->per_layer, sizeof *per_layer * n);
+        if (!per_layer) {
+            snprintf(err, err_size, "pvs: out of memory for the statistics of %u layers", n);
+            return false;
+        }
+        ctx->per_layer = per_layer;
         ctx->layer_capacity = n;
     }
     pvs_write_descriptors(ctx);
     return true;
 }
 
-/* Buffers sized by the scene or the resolution, created once. */
+/* Buffers sized by the scene or the tile, created once. */
 static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
 {
-    const VkDeviceSize pixels = (VkDeviceSize)ctx->width * ctx->height;
+    const VkDeviceSize pixels = (VkDeviceSize)ctx->grid.tile_width * ctx->grid.tile_height;
     const VkDeviceSize slots = pixels * ctx->k;
     const VkDeviceSize tris = ctx->triangle_count ? ctx->triangle_count : 1;
     struct {
@@ -196,6 +206,18 @@ static uint32_t coop_width(const rnd_context* rnd)
     return sub.subgroupSize < 4 ? 4 : sub.subgroupSize > 128 ? 128 : sub.subgroupSize;
 }
 
+/* The tile grid: at most `max_tile_pixels` pixels (0: the default) per tile
+ * and no per-pixel buffer over maxStorageBufferRange (the largest per pixel
+ * is the carry, or the k-buffers at k = TV_K_FRONT). */
+static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
+{
+    uint64_t per_pixel = (uint64_t)TV_K_CARRY * 16;
+    per_pixel = 8ull * ctx->k > per_pixel ? 8ull * ctx->k : per_pixel;
+    uint64_t fit = ctx->rnd->props.limits.maxStorageBufferRange / per_pixel;
+    uint64_t budget = max_tile_pixels ? max_tile_pixels : PVS_DEFAULT_TILE_PIXELS;
+    return pvs_tile_grid_make(ctx->width, ctx->height, budget < fit ? budget : fit);
+}
+
 static bool check_desc(const pvs_desc* d, char* err, size_t err_size)
 {
     if (d->k > TV_K_FRONT || d->k > TV_K_BACK || d->k > TV_K_TRIM || d->k > TV_K_UMBRA) {
@@ -236,6 +258,7 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     ctx->width = d.width ? d.width : PVS_DEFAULT_WIDTH;
     ctx->height = d.height ? d.height : PVS_DEFAULT_HEIGHT;
     ctx->k = d.k ? d.k : PVS_DEFAULT_K;
+    ctx->grid = tile_grid(ctx, d.max_tile_pixels);
     bool cpu = rnd->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     ctx->coop_sort_min = d.coop_sort_min ? d.coop_sort_min : cpu ? PVS_NEVER_COOP : PVS_DEFAULT_COOP_SORT_MIN;
     ctx->coop_width = coop_width(rnd);
@@ -253,8 +276,9 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
         pvs_destroy(ctx);
         return NULL;
     }
-    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u, k = %u, k-buffers %.1f MiB", scene->name,
-           ctx->octree.leaf_count, ctx->width, ctx->height, ctx->k,
+    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, k-buffers %.1f MiB",
+           scene->name, ctx->octree.leaf_count, ctx->width, ctx->height, pvs_tile_count(&ctx->grid),
+           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k,
            (double)(ctx->buffers[TV_PVS_BIND_KFRONT].size + ctx->buffers[TV_PVS_BIND_KBACK].size +
                     ctx->buffers[TV_PVS_BIND_KTRIM].size + ctx->buffers[TV_PVS_BIND_KUMBRA].size) /
                (1024.0 * 1024.0));
@@ -282,5 +306,6 @@ void pvs_destroy(pvs_context* ctx)
     pvs_layers_free(&ctx->layers);
     pvs_octree_free(&ctx->octree);
     free(ctx->result);
+    free(ctx->per_layer);
     free(ctx);
 }

@@ -7,10 +7,13 @@
 #include "layers.h"
 #include "octree.h"
 #include "pvs.h"
-#include "vk_internal.h"
+#include "render_vk.h"
+#include "tiles.h"
 
-#include "config.h"
-#include "pvs_layout.glsl"
+#include "mesh_shared.h"
+#include "pvs_shared.h"
+
+#include <stddef.h>
 
 /* Mirrors pvs_view_gpu in shaders/pvs_common.glsl (std430). */
 typedef struct pvs_view_gpu {
@@ -19,7 +22,13 @@ typedef struct pvs_view_gpu {
     float tan_half_x, tan_half_y, tan_alpha, far_dist; /* far_dist: PVS far plane from v* */
     float near_dist, delta, focal_px, max_width;      /* max_width: clamp of infinite trim widths */
     uint32_t width, height, k, triangle_count;
+    uint32_t tile_x, tile_y, tile_w, tile_h; /* rewritten per tile by the command buffer */
 } pvs_view_gpu;
+_Static_assert(offsetof(pvs_view_gpu, apex) == 64 && offsetof(pvs_view_gpu, up) == 112 &&
+                   offsetof(pvs_view_gpu, tan_half_x) == 128 && offsetof(pvs_view_gpu, near_dist) == 144 &&
+                   offsetof(pvs_view_gpu, width) == 160 &&
+                   offsetof(pvs_view_gpu, tile_x) == 176 && sizeof(pvs_view_gpu) == 192,
+               "pvs_view_gpu must match pvs_view_buf's std430 layout in pvs_common.glsl");
 
 /* Push constants of every PVS pipeline (mirrors pvs_common.glsl). */
 typedef struct pvs_push {
@@ -28,6 +37,8 @@ typedef struct pvs_push {
     uint32_t layer;        /* layer index (statistics) */
     uint32_t kind;         /* TV_PVS_KIND_* for the P2 pipelines */
 } pvs_push;
+_Static_assert(offsetof(pvs_push, kind) == 12 && sizeof(pvs_push) == 16,
+               "pvs_push must match pvs_push_block in pvs_common.glsl");
 
 enum { PVS_PIPE_CLASSIFY, PVS_PIPE_RESOLVE, PVS_PIPE_RESOLVE_GROUP, PVS_PIPE_GATHER, PVS_PIPE_FF, PVS_PIPE_BF,
        PVS_PIPE_TRIM, PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
@@ -38,6 +49,7 @@ struct pvs_context {
     rnd_context* rnd;
     const rnd_gpu_scene* gpu;
     uint32_t width, height, k;
+    pvs_tile_grid grid;     /* the per-pixel buffers hold one tile */
     uint32_t coop_sort_min; /* specialisation constants of P3's per-thread pass ... */
     uint32_t coop_width;    /* ... and of its cooperative pass: workgroup size = subgroup size */
     float near_m;
@@ -62,7 +74,8 @@ struct pvs_context {
     VkDescriptorSet set;
     VkPipeline pipelines[PVS_PIPE_COUNT];
 
-    uint32_t* result; /* sorted ids of the last computation */
+    uint32_t* result;           /* sorted ids of the last computation */
+    pvs_layer_stats* per_layer; /* its per-layer statistics, layer_capacity entries */
 };
 
 #define PVS_NEVER_COOP UINT32_MAX /* coop_sort_min: every sequence sorted per thread */

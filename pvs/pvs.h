@@ -3,7 +3,7 @@
  * pvs_create builds everything that does not depend on the viewcell (welding
  * and triangle adjacency, the octree, GPU buffers and pipelines); pvs_compute
  * then runs, per request, P0 on the CPU (octree layers seen from the apex v*)
- * and P1-P4 on the GPU (docs/trim-regions.md, "GPU passes"), and returns the
+ * and P1-P4 on the GPU (docs/pvs-gpu-passes.md), and returns the
  * sorted unique ids of every triangle potentially visible from the
  * double-cone viewcell.
  *
@@ -15,6 +15,7 @@
 #ifndef TRIMVR_PVS_H
 #define TRIMVR_PVS_H
 
+#include "pvs_viewcell.h"
 #include "render.h"
 #include "scene.h"
 
@@ -38,22 +39,35 @@ typedef struct pvs_desc {
                                         subgroup-wide workgroup per pixel (bitonic), shorter ones per
                                         thread; 0: 8 (the paper's N) on a GPU, never on a CPU device;
                                         UINT32_MAX: never */
+    uint32_t max_tile_pixels;        /* the image is computed in tiles of at most this many pixels
+                                        (pvs/tiles.h; per-pixel memory follows the tile); 0: 512 x 512;
+                                        lowered to what maxStorageBufferRange allows */
 } pvs_desc;
 
-/* A double-cone viewcell with its widened field of view. fov_pvs_deg is the
- * full angle along the smaller image axis of the PVS resolution (the
- * vertical one for landscape; the larger axis follows from the aspect), so
- * the PVS frustum contains the square pyramid of half-angle
- * α = fov_pvs_deg / 2 that predict/ sizes the viewcell for; z = Δ / tan α. */
-typedef struct pvs_viewcell {
-    float v0[3];          /* centre of the viewcell */
-    float forward[3];     /* view axis (need not be unit length) */
-    float up[3];          /* not parallel to forward */
-    float delta;          /* radius Δ of the double cone's base disk, metres, >= 0 */
-    float fov_target_deg; /* display FOV (informational: sizing is the caller's job) */
-    float fov_pvs_deg;    /* widened FOV the PVS is computed for, in (0, 180) */
-    float far_m;          /* far plane of the eyes' cameras, measured from v0 */
-} pvs_viewcell;
+/* The apex may lie at most pvs_max_apex_offset(near_m) behind v0, that is
+ * Δ <= that x tan α. The PVS depth buffer (D32_SFLOAT, standard Z, near
+ * plane near_m) resolves depth steps of about 2^-24 d^2 / near_m at distance
+ * d from the apex; around the viewcell (d ~ z) the steps must stay within
+ * PVS_MAX_DEPTH_STEP_M or the depth tests of the passes merge distinct
+ * surfaces and the PVS loses visible triangles (builtin:unit, PVS 512x512,
+ * near 0.01 m: conservative at z = 30 m, a 5.4 mm step; misses at z = 40 m,
+ * 9.5 mm; nothing at all at z = 1e5 m, where every depth rounds to the far
+ * plane's). With the default near plane the limit is z <= 31.7 m. */
+#define PVS_MAX_DEPTH_STEP_M 0.006f
+float pvs_max_apex_offset(float near_m);
+
+/* One layer's share of a computation (docs/pvs-gpu-passes.md, "Cost per
+ * phase"). Pixel figures are summed over the image's tiles. */
+typedef struct pvs_layer_stats {
+    uint32_t triangles;          /* in the layer (P1's input) */
+    uint32_t fronts, backs;      /* triangles P1 passed to P2's draws (inside the frustum) */
+    uint32_t silhouettes;        /* trim regions: a trim quad (drawn 3 times) and an umbra quad each */
+    uint64_t active_pixels;      /* pixels P3 resolved */
+    uint64_t sequence_entries;   /* trim-sequence entries at those pixels (P3's sort input) */
+    uint64_t overflow_pixels;    /* of those, resolved by the overflow policy */
+    uint64_t kbuffer_bytes_used; /* k-buffer entries read by P3, in bytes */
+    double ms[3];                /* P1, P2, P3 (spill draws included): GPU timestamps summed over tiles */
+} pvs_layer_stats;
 
 typedef struct pvs_stats {
     double ms[5];                 /* P0..P4: P0, P4 CPU wall clock; P1-P3 GPU timestamps summed
@@ -65,11 +79,13 @@ typedef struct pvs_stats {
     uint32_t silhouettes;         /* trim regions emitted over all layers */
     uint64_t active_pixels;       /* active pixels resolved, summed over layers */
     double mean_sequence;         /* mean trim-sequence length (k-buffer entries) per resolve */
-    uint64_t kbuffer_bytes;       /* k-buffers allocated */
-    uint64_t kbuffer_bytes_used;  /* most k-buffer bytes filled in one layer */
+    uint64_t kbuffer_bytes;       /* k-buffers allocated (for one tile) */
+    uint64_t kbuffer_bytes_used;  /* most k-buffer bytes P3 read in one layer, over the whole image */
     uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */
     uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
     uint64_t coop_pixels;         /* pixel resolves whose sequences a workgroup sorted */
+    uint32_t tiles;               /* tiles the image was computed in (pvs_desc.max_tile_pixels) */
+    const pvs_layer_stats* per_layer; /* `layers` entries, owned by the context like pvs_result.ids */
 } pvs_stats;
 
 typedef struct pvs_result {
@@ -94,7 +110,8 @@ void pvs_destroy(pvs_context* ctx);
 /* Computes the PVS of `vc` into `out` (see pvs_result for ownership). Blocks
  * until the GPU is done. Returns false with a one-line reason in err on an
  * invalid viewcell (non-finite values, zero forward, up parallel to forward,
- * fov outside (0, 180), far_m <= 0) or a Vulkan failure. */
+ * fov outside (0, 180), far_m <= 0, an apex offset z = Δ / tan α beyond
+ * pvs_max_apex_offset) or a Vulkan failure. */
 bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char* err, size_t err_size);
 
 /* The frustum pvs_compute uses, as an rnd_camera at the apex v* (aspect of

@@ -56,59 +56,6 @@ static seq_entry make_entry(float depth, uint32_t kind, uint32_t id, int32_t del
     return (seq_entry){.depth = depth, .kind = kind, .id = id, .interval = -1, .delta = delta};
 }
 
-/* The counter always advances, as P2's atomic does, so that a value above
- * the capacity tells P3 the list overflowed; the slot is usable below it. */
-static bool claim(uint32_t* counter, uint32_t capacity, uint32_t* slot)
-{
-    *slot = (*counter)++;
-    return *slot < capacity;
-}
-
-bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id)
-{
-    uint32_t s;
-    switch (kind) {
-    case TV_ENTRY_FRONT:
-        if (!claim(&kbuf->front_count, TV_K_FRONT, &s)) {
-            if ((id & TV_ID_CANDIDATE) == 0 && (kbuf->front_lost == 0.0f || depth < kbuf->front_lost))
-                kbuf->front_lost = depth;
-            return false;
-        }
-        kbuf->front_depth[s] = depth;
-        kbuf->front_tri[s] = id;
-        return true;
-    case TV_ENTRY_BACK:
-        /* Candidate backs fill at most half the list: a real back they
-         * pushed out would merge two intervals (more output). They are
-         * dropped without a count, so the list does not read as overflowed. */
-        if ((id & TV_ID_CANDIDATE) != 0 && kbuf->back_count >= TV_K_BACK / 2)
-            return false;
-        if (!claim(&kbuf->back_count, TV_K_BACK, &s))
-            return false;
-        kbuf->back_depth[s] = depth;
-        kbuf->back_tri[s] = id;
-        return true;
-    case TV_ENTRY_TRIM:
-        if (!claim(&kbuf->trim_count, TV_K_TRIM, &s)) {
-            if (kbuf->trim_lost == 0.0f || depth < kbuf->trim_lost)
-                kbuf->trim_lost = depth;
-            return false;
-        }
-        kbuf->trim_depth[s] = depth;
-        kbuf->trim_region[s] = id;
-        return true;
-    case TV_ENTRY_UMBRA:
-        if (!claim(&kbuf->umbra_count, TV_K_UMBRA, &s))
-            return false;
-        kbuf->umbra_depth[s] = depth;
-        kbuf->umbra_region[s] = id;
-        return true;
-    default:
-        assert(!"pvs_kbuf_push: kind must be FRONT, BACK, TRIM or UMBRA");
-        return false;
-    }
-}
-
 static uint32_t min_u32(uint32_t a, uint32_t b)
 {
     return a < b ? a : b;
@@ -276,9 +223,9 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
  * two moved TV_PVS_TRIM_NUDGE towards the other. The solid lies between the
  * planes, so the region meets a range its fragments overlap or straddle (a
  * thin solid's interval can fall between two draws), and a range that
- * starts on its farther plane: a face in that plane (found on oa:oa_dm5,
- * docs/trim-regions.md) lies behind every draw. With two draws that plane
- * is twice the midpoint less the nearer.
+ * starts on its farther plane: a face in that plane (found on oa:oa_dm5;
+ * docs/trim-regions.md, "Umbra quad and trim quad") lies behind every
+ * draw. With two draws that plane is twice the midpoint less the nearer.
  * When trims were lost, only fragments in front of the nearest lost one
  * count (all of those found room): which ones behind it did depends on
  * arrival order, and the PVS must not. */
@@ -588,13 +535,6 @@ static uint32_t resolve_sealed(const pvs_pixel_state* s, const pvs_kbuf* kbuf, u
     return n_out;
 }
 
-bool pvs_sealed_output(const pvs_pixel_state* state, float depth)
-{
-    assert(state && state->stencil == TV_STENCIL_SEALED);
-    bool hidden = state->hide_begin < state->hide_end && state->hide_begin < depth && depth < state->hide_end;
-    return depth < state->term_depth && !hidden;
-}
-
 uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out,
                            bool* overflowed)
 {
@@ -643,15 +583,4 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
         state->hide_begin = state->hide_end = 0.0f;
     }
     return n_out;
-}
-
-bool pvs_spill_output(const pvs_pixel_state* state, uint32_t id, float depth)
-{
-    assert(state);
-    if (state->stencil == TV_STENCIL_OVERFLOW)
-        return true;
-    if ((id & TV_ID_CANDIDATE) == 0)
-        return false;
-    return state->stencil == TV_STENCIL_TRIMMED ||
-           (state->stencil == TV_STENCIL_SEALED && depth < state->term_depth);
 }

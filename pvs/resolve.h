@@ -1,90 +1,22 @@
 /* resolve.h - trim-sequence resolve of one pixel for one layer (P3), the C
  * reference the P3 compute shader mirrors line by line (paper section 4.3).
+ * The rules, with examples and the reasons for each, are in
+ * docs/trim-regions.md ("k-buffer layout", "Resolve rules", "Overflow
+ * policy"); the cases beyond the paper (prior faces, candidates, lone,
+ * culled, straddled and cracked backs) in docs/pvs-edge-cases.md.
  *
- * Data layout (per pixel, as on the GPU): four k-buffers with fixed
- * capacities from shaders/config.h, each with an atomic counter that P2
- * increments for every fragment, also past the capacity: a counter above its
- * K is how P3 knows the list overflowed. Trim and umbra fragments carry the
- * id of the silhouette edge that produced them (the trim-region id, unique
- * within one PVS computation: P1 numbers the silhouettes of all layers
- * consecutively), which is the 1:1 trim region <-> umbra correspondence.
- *
- * The pixel state persists across layers: the trim stencil, the unfinished
- * interval carried to the next layer (fronts, with the trims and umbrae that
- * may still validate it), and one hidden range [hide_begin, hide_end] (the
- * umbrae still open at the end of the layer).
- *
- * Rules (docs/trim-regions.md has examples): sort by (depth, kind, id);
- * greedy intervals [f, b] over fronts and backs, extended at the front over
- * consecutive fronts; an interval is validated by a trim region with a
- * fragment t, f <= t <= b, or fragments on both sides of [f, b]; its back is
- * replaced by the nearest umbra of the validating regions (never nearer than
- * b); +1 at validated fronts, -1 at those umbrae, prefix sum > 0 hides an
- * entry. Walking front to back, the fronts of every validated interval are
- * output unless its first front is hidden; the first front or back outside
- * a validated interval is the terminator (a visible front terminator is
- * output, and so is a visible lone back: a double-sided surface seen from
- * behind, which the renderer draws; a hidden front terminates unseen, being
- * uneroded; a hidden lone back is skipped, and a lone back that a trim
- * region meets is output without terminating) and seals the pixel; a
- * trailing run of fronts without a back is carried, not a terminator. The
- * back of an interval that a crack edge's trim (TV_REGION_CRACK) lies in,
- * or up to TV_PVS_CRACK_SLACK_M in front of, is output with its first
- * front (validated and unhidden, or the terminator): the eyes see it
- * through the crack. So is a straddled back (id | TV_ID_STRADDLED: the
- * viewcell straddles its plane, so some eyes see its front).
- *
- * Culled backs (back id | TV_ID_CULLED: the renderer culls the triangle
- * from the whole viewcell, glTF's single-sided materials) close the interval
- * their front opened and do nothing else: never output, and a lone one is
- * skipped (neither visible nor an occluder). An interval with a crack and a
- * culled back hides its inside only: through the crack the eyes see what
- * lies behind it.
- *
- * Candidate fronts (front id | TV_ID_CANDIDATE: the triangle touches the
- * pixel without covering its centre) take no part in intervals and never
- * terminate: one is output when the walk reaches it outside every hidden
- * range, or inside a validated interval whose fronts are output. Output ids
- * never carry the flag. Candidate backs (back id | TV_ID_CANDIDATE: the back
- * of a triangle narrower than a pixel, which may cover no centre at all)
- * likewise, but are output only outside every hidden range and in front of
- * every face of the sequence; they are never carried and fill at most half
- * the back list (pvs_kbuf_push).
- *
- * Overflow policy (never lose a visible front), per list:
- * - fronts: P2 keeps the nearest depth of the fronts that find the list full
- *   (front_lost; pvs_kbuf_push tells the caller, who decides with
- *   pvs_spill_output after the resolve whether to add them to the PVS).
- *   The sequence is complete in front of that depth: a terminator found
- *   there seals the pixel as usual, the lost fronts lying behind it. Otherwise a lost front could have opened an interval whose
- *   back now looks like a terminator, in this or a later layer, so the pixel
- *   becomes TV_STENCIL_OVERFLOW: all its stored and carried fronts are
- *   output, and in every later layer all fronts are output and the pixel is
- *   never sealed. The same when the carry does not fit. Lost candidates
- *   change nothing (they never occlude).
- * - trims: P2 keeps the nearest depth of the lost trims (trim_lost). An
- *   interval whose back lies at or behind it may have been validated by a
- *   lost trim, whose umbra may have been the nearest: it counts as valid and
- *   hides up to its back only. Intervals in front of it are complete and
- *   resolve as usual; the trims behind it that found room (an accident of
- *   arrival order) count for nothing. A carried run gets a trim without
- *   umbra (region TV_ID_PRIOR) at its first front, which validates it when
- *   its back arrives.
- * - backs: nothing to do. A lost back merges two intervals into one (valid
- *   when either was, hiding no further than the later back) or leaves a run
- *   open; it never creates a terminator: only more output.
- * - umbrae: nothing to do. A region whose umbra was lost hides up to the
- *   back only.
- * See docs/trim-regions.md for the rules and examples.
- *
- * Prior faces: when an untrimmed pixel becomes trimmed, its nearest face of
- * this and the earlier layers (kbuf nearest_front / nearest_back) enters the
- * sequence as a front and/or back with id TV_ID_PRIOR, which is never output;
- * its nearest culled back (nearest_culled_back) as TV_ID_PRIOR_CULLED.
- * Without it a trim arriving in a later layer than its occluder's face (a
- * triangle is drawn in its earliest layer only, and objects span layers)
- * would resolve as if that face were absent: everything behind it counted
- * as visible, or the object's back face taken for the terminator.
+ * Contract in short:
+ * - Per pixel and layer, four k-buffers (fronts, backs, trims, umbrae) of
+ *   TV_K_* entries (shaders/pvs_shared.h) whose counters run past K: a count
+ *   above K means the list overflowed. Trims and umbrae carry their
+ *   trim-region id, unique within one PVS computation, which pairs them.
+ * - Depths are any value monotonic along the pixel's ray from v*.
+ * - pvs_pixel_state persists across layers (zero-initialised = untrimmed):
+ *   stencil, at most TV_K_CARRY carried entries, one hidden range, and once
+ *   sealed the terminator's depth.
+ * - pvs_resolve_pixel writes at most PVS_RESOLVE_MAX_OUTPUT triangle ids,
+ *   never with a TV_ID_* flag. Where a list or the carry overflowed it errs
+ *   towards output (false positives), never towards a lost triangle.
  */
 #ifndef TRIMVR_PVS_RESOLVE_H
 #define TRIMVR_PVS_RESOLVE_H
@@ -92,7 +24,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "config.h"
+#include "pvs_shared.h"
 
 #ifdef __cplusplus
 extern "C" {

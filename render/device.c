@@ -1,6 +1,6 @@
 /* device.c - instance, validation messenger, physical device choice, the
  * logical device with its single queue, and the serialised submit path. */
-#include "vk_internal.h"
+#include "render_vk.h"
 
 #include "log.h"
 

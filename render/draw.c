@@ -1,10 +1,10 @@
 /* draw.c - the mesh pass: clear, draw all triangles or an ascending subset
  * through the vertex-pulling pipeline, leave the attachments ready for
  * read-back. Synchronous: returns when the GPU is done. */
-#include "vk_internal.h"
+#include "render_vk.h"
 
 #include "clock.h"
-#include "config.h"
+#include "mesh_shared.h"
 #include "log.h"
 
 #include <assert.h>

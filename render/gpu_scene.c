@@ -1,9 +1,10 @@
 /* gpu_scene.c - uploads an scn_scene into storage buffers and sampled images
  * and writes the scene descriptor set (layout in shaders/mesh_common.glsl). */
-#include "vk_internal.h"
+#include "render_vk.h"
 
-#include "config.h"
+#include "mesh_shared.h"
 
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,6 +17,9 @@ typedef struct material_gpu {
     float alpha_cutoff;
     uint32_t pad;
 } material_gpu;
+_Static_assert(offsetof(material_gpu, texture) == 16 && offsetof(material_gpu, flags) == 20 &&
+                   offsetof(material_gpu, alpha_cutoff) == 24 && sizeof(material_gpu) == 32,
+               "material_gpu must match tv_material_gpu's std430 layout in mesh_common.glsl");
 
 #define ATTRIB_STRIDE 5 /* TV_ATTRIB_STRIDE in mesh_common.glsl */
 

@@ -1,11 +1,11 @@
 /* pipeline.c - shader modules from the embedded SPIR-V, descriptor set
  * layouts, the raster pipeline set-up shared with the PVS passes, and the
  * mesh pipeline (dynamic rendering, no vertex input). */
-#include "vk_internal.h"
+#include "render_vk.h"
 
 #include <assert.h>
 
-#include "config.h"
+#include "mesh_shared.h"
 #include "mesh_frag.spv.h"
 #include "mesh_vert.spv.h"
 

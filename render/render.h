@@ -21,7 +21,7 @@
  * rnd_draw and the rnd_target_read_* functions may run concurrently from
  * several threads provided each thread uses its own target; a gpu scene is
  * read-only after creation and may be shared. Queue submission is serialised
- * inside the context (see vk_internal.h for the per-thread stream helpers).
+ * inside the context (see render_vk.h for the per-thread stream helpers).
  * rnd_validation_message_count is safe from any thread.
  */
 #ifndef TRIMVR_RENDER_H

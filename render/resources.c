@@ -1,7 +1,7 @@
 /* resources.c - buffers, images, layout barriers and staged uploads. Each
  * resource gets its own allocation: the renderer holds a few dozen at most,
  * far below maxMemoryAllocationCount. */
-#include "vk_internal.h"
+#include "render_vk.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -2,7 +2,7 @@
  * buffer, one fence and a timestamp pair per stream. Recording is
  * synchronous (record, submit, wait), which is what offscreen comparison
  * renders and the PVS worker need; the queue itself is shared via rnd_submit. */
-#include "vk_internal.h"
+#include "render_vk.h"
 
 #include <string.h>
 

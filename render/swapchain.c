@@ -2,7 +2,7 @@
  * (see swapchain.h for why the frame is composed on the CPU). */
 #include "swapchain.h"
 
-#include "vk_internal.h"
+#include "render_vk.h"
 
 #include <assert.h>
 #include <stdio.h>

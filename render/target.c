@@ -3,9 +3,9 @@
  *
  * Between draws every attachment rests in TRANSFER_SRC_OPTIMAL, so a
  * read-back is one copy and the next draw starts from a known layout. */
-#include "vk_internal.h"
+#include "render_vk.h"
 
-#include "config.h"
+#include "mesh_shared.h"
 #include "log.h"
 
 #include <stdio.h>

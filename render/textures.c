@@ -5,9 +5,9 @@
  * texture's, capped at TV_MAX_TEXTURE_SIZE; smaller or larger textures are
  * resampled bilinearly (on the sRGB-encoded values, a small error accepted
  * for simplicity), so repeat wrapping still works per layer. */
-#include "vk_internal.h"
+#include "render_vk.h"
 
-#include "config.h"
+#include "mesh_shared.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -25,6 +25,7 @@ struct Loader {
     std::vector<int> material_map; // glTF material -> scn material, -1 until used
     std::vector<int> image_map;    // glTF image -> scn texture, -1 until used
     int default_material = -1;
+    int skipped_mode = -1;         // mode of a points/lines primitive left out, -1 if none
     std::string problem;           // set on failure (without the file name)
 };
 
@@ -78,11 +79,20 @@ const unsigned char* accessor_data(Loader& L, int index, size_t* stride, size_t*
         L.problem = what + " uses a buffer view without a buffer";
         return nullptr;
     }
-    size_t buffer_size = m.buffers[v.buffer].data.size();
-    size_t need = a.count ? a.byteOffset + *stride * (a.count - 1) + *elem_size : 0;
-    if (v.byteOffset + v.byteLength > buffer_size || need > v.byteLength) {
-        L.problem = what + " reads past the end of buffer " + std::to_string(v.buffer) + " (needs " +
-                    std::to_string(v.byteOffset + need) + " bytes, has " + std::to_string(buffer_size) + ")";
+    // Offsets and counts come from the file: a sum near 2^64 must not wrap
+    // into a small "in bounds" value.
+    size_t buffer_size = m.buffers[v.buffer].data.size(), view_end = 0, need = 0;
+    bool wrapped = __builtin_add_overflow(v.byteOffset, v.byteLength, &view_end);
+    if (a.count) {
+        wrapped |= __builtin_mul_overflow(*stride, a.count - 1, &need);
+        wrapped |= __builtin_add_overflow(need, a.byteOffset, &need);
+        wrapped |= __builtin_add_overflow(need, *elem_size, &need);
+    }
+    if (wrapped || view_end > buffer_size || need > v.byteLength) {
+        L.problem = what + " (" + std::to_string(a.count) + " elements at offset " + std::to_string(a.byteOffset) +
+                    " of buffer view " + std::to_string(a.bufferView) + ", offset " + std::to_string(v.byteOffset) +
+                    ", length " + std::to_string(v.byteLength) + ") reads past the end of buffer " +
+                    std::to_string(v.buffer) + " (" + std::to_string(buffer_size) + " bytes)";
         return nullptr;
     }
     return m.buffers[v.buffer].data.data() + v.byteOffset + a.byteOffset;
@@ -176,12 +186,18 @@ void to_triangle_list(int mode, std::vector<uint32_t>& idx)
 int texture_for(Loader& L, const tinygltf::Material& mat)
 {
     int tex = mat.pbrMetallicRoughness.baseColorTexture.index;
-    if (tex < 0)
+    if (tex == -1)
         return -1;
-    if ((size_t)tex >= L.model.textures.size() || L.model.textures[tex].source < 0 ||
-        (size_t)L.model.textures[tex].source >= L.model.images.size()) {
-        tv_log(TV_LOG_WARN, "%s: material '%s' has a texture without an image; untextured", L.path, mat.name.c_str());
-        return -1;
+    if (tex < 0 || (size_t)tex >= L.model.textures.size()) {
+        L.problem = "material '" + mat.name + "' references missing texture " + std::to_string(tex) + " (the file has " +
+                    std::to_string(L.model.textures.size()) + ")";
+        return -2;
+    }
+    int image = L.model.textures[tex].source;
+    if (image < 0 || (size_t)image >= L.model.images.size()) {
+        L.problem = "texture " + std::to_string(tex) + " of material '" + mat.name + "' references missing image " +
+                    std::to_string(image) + " (the file has " + std::to_string(L.model.images.size()) + ")";
+        return -2;
     }
     int src = L.model.textures[tex].source;
     if (L.image_map[src] >= 0)
@@ -205,7 +221,12 @@ int texture_for(Loader& L, const tinygltf::Material& mat)
 // scn material index for glTF material `index` (-1: a white default), or -1 on failure.
 int material_for(Loader& L, int index)
 {
-    if (index < 0 || (size_t)index >= L.model.materials.size()) {
+    if (index < -1 || (index >= 0 && (size_t)index >= L.model.materials.size())) {
+        L.problem = "a primitive references missing material " + std::to_string(index) + " (the file has " +
+                    std::to_string(L.model.materials.size()) + ")";
+        return -1;
+    }
+    if (index < 0) {
         if (L.default_material < 0) {
             scn_material m = {};
             std::snprintf(m.name, sizeof m.name, "default");
@@ -240,6 +261,7 @@ bool append_primitive(Loader& L, const tinygltf::Primitive& prim, const float wo
     int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
         tv_log(TV_LOG_DEBUG, "%s: skipping a primitive of mode %d (points/lines)", L.path, mode);
+        L.skipped_mode = mode;
         return true;
     }
     auto pos_it = prim.attributes.find("POSITION");
@@ -311,22 +333,90 @@ bool visit_node(Loader& L, int index, const float parent[16], int depth, char* e
     return true;
 }
 
-std::vector<int> root_nodes(const tinygltf::Model& m)
+// Nodes of the file's "scene" (or the first scene, or every parentless node
+// when the file has no scenes); false (problem set) if "scene" is missing.
+bool root_nodes(Loader& L, std::vector<int>& roots)
 {
+    const tinygltf::Model& m = L.model;
+    if (m.defaultScene >= 0 && (size_t)m.defaultScene >= m.scenes.size()) {
+        L.problem = "\"scene\" is " + std::to_string(m.defaultScene) + " but the file has " +
+                    std::to_string(m.scenes.size()) + " scenes";
+        return false;
+    }
     if (!m.scenes.empty()) {
-        int s = m.defaultScene >= 0 && (size_t)m.defaultScene < m.scenes.size() ? m.defaultScene : 0;
-        return m.scenes[s].nodes;
+        roots = m.scenes[m.defaultScene >= 0 ? m.defaultScene : 0].nodes;
+        return true;
     }
     std::vector<bool> is_child(m.nodes.size(), false);
     for (const tinygltf::Node& n : m.nodes)
         for (int c : n.children)
             if (c >= 0 && (size_t)c < is_child.size())
                 is_child[c] = true;
-    std::vector<int> roots;
     for (size_t i = 0; i < m.nodes.size(); i++)
         if (!is_child[i])
             roots.push_back((int)i);
-    return roots;
+    return true;
+}
+
+// The JSON text of a .gltf, or the JSON chunk of a .glb; empty if unreadable
+// (tinygltf then reports the problem).
+std::string json_text(const char* path, bool binary)
+{
+    std::string text;
+    FILE* f = std::fopen(path, "rb");
+    if (!f)
+        return text;
+    unsigned char head[20];
+    uint32_t len = 0;
+    if (!binary) {
+        char buf[65536];
+        for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;)
+            text.append(buf, n);
+    } else if (std::fread(head, 1, sizeof head, f) == sizeof head && std::memcmp(head + 16, "JSON", 4) == 0) {
+        std::memcpy(&len, head + 12, 4);
+        // The chunk length is the file's claim: never allocate past its size.
+        long here = std::ftell(f);
+        std::fseek(f, 0, SEEK_END);
+        long size = std::ftell(f);
+        std::fseek(f, here, SEEK_SET);
+        text.resize(std::min((size_t)len, (size_t)std::max(size - here, 0L)));
+        text.resize(std::fread(&text[0], 1, len, f));
+    }
+    std::fclose(f);
+    return text;
+}
+
+// What tinygltf lets through silently: a glTF 1.0 file (it then finds no
+// meshes) and offsets or indices that are not non-negative integers (it
+// then uses 0 or treats them as absent). Empty when the JSON is fine.
+std::string check_json(const std::string& text)
+{
+    using nlohmann::json;
+    json j = json::parse(text, nullptr, false);
+    if (j.is_discarded() || !j.is_object())
+        return "";
+    auto asset = j.find("asset");
+    if (asset != j.end() && asset->is_object()) {
+        auto version = asset->find("version");
+        if (version != asset->end() && version->is_string() && version->get<std::string>().rfind("2.", 0) != 0)
+            return "is glTF " + version->get<std::string>() + "; trimvr reads glTF 2.0 only (convert the file)";
+    }
+    if (j.contains("scene") && !j["scene"].is_number_unsigned())
+        return "\"scene\" is " + j["scene"].dump() + ", not a scene index";
+    static const char* const checks[][2] = { { "bufferViews", "byteOffset" }, { "bufferViews", "byteStride" },
+                                              { "accessors", "byteOffset" }, { "nodes", "mesh" } };
+    for (const auto& c : checks) {
+        auto arr = j.find(c[0]);
+        if (arr == j.end() || !arr->is_array())
+            continue;
+        for (size_t i = 0; i < arr->size(); i++) {
+            const json& e = (*arr)[i];
+            if (e.is_object() && e.contains(c[1]) && !e[c[1]].is_number_unsigned())
+                return std::string(c[0]) + "[" + std::to_string(i) + "]." + c[1] + " is " + e[c[1]].dump() +
+                       ", not a non-negative integer";
+        }
+    }
+    return "";
 }
 
 std::string one_line(std::string s)
@@ -356,6 +446,11 @@ bool load(const char* path, scn_scene* out, char* err, size_t err_size)
     std::string terr, twarn;
     size_t len = std::strlen(path);
     bool binary = len >= 4 && (path[len - 1] == 'b' || path[len - 1] == 'B');
+    std::string problem = check_json(json_text(path, binary));
+    if (!problem.empty()) {
+        std::snprintf(err, err_size, "%s: %s", path, problem.c_str());
+        return false;
+    }
     bool ok = binary ? gltf.LoadBinaryFromFile(&L.model, &terr, &twarn, path)
                      : gltf.LoadASCIIFromFile(&L.model, &terr, &twarn, path);
     if (!twarn.empty())
@@ -374,13 +469,21 @@ bool load(const char* path, scn_scene* out, char* err, size_t err_size)
     const char* base = std::strrchr(path, '/');
     std::snprintf(out->name, sizeof out->name, "%s", base ? base + 1 : path);
     const float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
-    for (int root : root_nodes(L.model)) {
-        if (!visit_node(L, root, identity, 0, err, err_size)) {
-            if (!L.problem.empty())
-                std::snprintf(err, err_size, "%s: %s", path, L.problem.c_str());
-            scn_builder_abort(&L.builder);
-            return false;
-        }
+    std::vector<int> roots;
+    bool ok_nodes = root_nodes(L, roots);
+    for (size_t i = 0; ok_nodes && i < roots.size(); i++)
+        ok_nodes = visit_node(L, roots[i], identity, 0, err, err_size);
+    if (ok_nodes && out->triangle_count == 0) {
+        L.problem = L.skipped_mode >= 0 ? "has only point/line primitives (mode " + std::to_string(L.skipped_mode) +
+                                              "); trimvr renders triangles only"
+                                        : "contains no triangles";
+        ok_nodes = false;
+    }
+    if (!ok_nodes) {
+        if (!L.problem.empty())
+            std::snprintf(err, err_size, "%s: %s", path, L.problem.c_str());
+        scn_builder_abort(&L.builder);
+        return false;
     }
     return scn_builder_finish(&L.builder, path, err, err_size);
 }

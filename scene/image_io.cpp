@@ -1,5 +1,6 @@
 // image_io.cpp - the OpenImageIO adapter behind image_io.h.
 #include "image_io.h"
+#include "log.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
@@ -12,6 +13,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 using namespace OIIO;
@@ -41,6 +43,47 @@ static const ImageSpec& unassociated_config()
     return config;
 }
 
+// OIIO 2.4's PNG reader leaves libpng's default handlers in place, which
+// print "libpng error: ..." on stderr before OIIO returns the same text as
+// its error. While decoding, fd 2 goes to a temporary file; what was caught
+// is dropped on failure (the error carries it) and logged as debug output on
+// success (libpng warnings). Scene loading decodes images before any other
+// thread writes to stderr.
+class StderrCapture {
+public:
+    StderrCapture()
+    {
+        std::fflush(stderr);
+        file_ = std::tmpfile();
+        saved_ = file_ ? dup(2) : -1;
+        if (saved_ >= 0)
+            dup2(fileno(file_), 2);
+    }
+    ~StderrCapture() { finish(); }
+    std::string finish()
+    {
+        std::string text;
+        if (saved_ >= 0) {
+            std::fflush(stderr);
+            dup2(saved_, 2);
+            close(saved_);
+            saved_ = -1;
+            std::rewind(file_);
+            char buf[512];
+            for (size_t n; (n = std::fread(buf, 1, sizeof buf, file_)) > 0;)
+                text.append(buf, n);
+        }
+        if (file_)
+            std::fclose(file_);
+        file_ = nullptr;
+        return text;
+    }
+
+private:
+    FILE* file_ = nullptr;
+    int saved_ = -1;
+};
+
 // Decodes an opened input into a malloc'd RGBA8 buffer.
 static bool decode_rgba8(ImageInput* in, const char* file, uint8_t** rgba8, uint32_t* width,
                          uint32_t* height, char* err, size_t err_size)
@@ -49,6 +92,11 @@ static bool decode_rgba8(ImageInput* in, const char* file, uint8_t** rgba8, uint
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1)
         return fail(err, err_size, file, "unsupported image dimensions");
     size_t w = (size_t)spec.width, h = (size_t)spec.height, nc = (size_t)spec.nchannels;
+    if (w > SCN_IMAGE_MAX_SIDE || h > SCN_IMAGE_MAX_SIDE || w * h > SCN_IMAGE_MAX_PIXELS || nc > 64)
+        return fail(err, err_size, file,
+                    "image claims " + std::to_string(w) + "x" + std::to_string(h) + " pixels, " +
+                        std::to_string(nc) + " channels; the limit is " + std::to_string(SCN_IMAGE_MAX_SIDE) +
+                        " per side and " + std::to_string(SCN_IMAGE_MAX_PIXELS) + " pixels (64 channels)");
     std::vector<uint8_t> src(w * h * nc);
     if (!in->read_image(0, 0, 0, (int)nc, TypeDesc::UINT8, src.data()))
         return fail(err, err_size, file, "cannot decode image: " + in->geterror());
@@ -70,16 +118,28 @@ static bool decode_rgba8(ImageInput* in, const char* file, uint8_t** rgba8, uint
     return true;
 }
 
+static bool decoded(bool ok, StderrCapture& capture, const char* file)
+{
+    std::string caught = capture.finish();
+    for (char& c : caught)
+        if (c == '\n' || c == '\r')
+            c = ' ';
+    if (ok && !caught.empty())
+        tv_log(TV_LOG_DEBUG, "%s: decoder said: %s", file, caught.c_str());
+    return ok;
+}
+
 bool scn_image_read(const char* path, uint8_t** rgba8, uint32_t* width, uint32_t* height, char* err,
                     size_t err_size)
 {
     *rgba8 = nullptr;
     if (!Filesystem::is_regular(path))
         return fail(err, err_size, path, "image file not found");
+    StderrCapture capture;
     auto in = ImageInput::open(path, &unassociated_config());
     if (!in)
         return fail(err, err_size, path, "cannot open image: " + OIIO::geterror());
-    return decode_rgba8(in.get(), path, rgba8, width, height, err, err_size);
+    return decoded(decode_rgba8(in.get(), path, rgba8, width, height, err, err_size), capture, path);
 }
 
 bool scn_image_read_memory(const void* data, size_t size, const char* name, uint8_t** rgba8,
@@ -100,10 +160,11 @@ bool scn_image_read_memory(const void* data, size_t size, const char* name, uint
     ImageSpec config = unassociated_config();
     void* proxy = &reader;
     config.attribute("oiio:ioproxy", TypeDesc::PTR, &proxy);
+    StderrCapture capture;
     auto in = ImageInput::open(probe, &config, &reader);
     if (!in)
         return fail(err, err_size, name, "cannot decode embedded image: " + OIIO::geterror());
-    return decode_rgba8(in.get(), name, rgba8, width, height, err, err_size);
+    return decoded(decode_rgba8(in.get(), name, rgba8, width, height, err, err_size), capture, name);
 }
 
 void scn_image_free(uint8_t* rgba8)

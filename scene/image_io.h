@@ -1,4 +1,5 @@
-/* image_io.h - image files through OpenImageIO (the only file that uses it).
+/* image_io.h - image files through OpenImageIO (image_io.cpp, the only file
+ * that uses it), or libpng and libjpeg in the portable build (image_io_png.c).
  *
  * Decoding gives RGBA8 whatever the source (grey, RGB, 16-bit, float): the
  * renderer samples one format. Every function returns false with a one-line
@@ -15,6 +16,13 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* Largest image the readers accept, checked on the header before any pixel
+ * memory is allocated: a few-byte file can claim 2^31 x 2^31 pixels. 16384
+ * is the usual Vulkan maxImageDimension2D; 2^26 pixels (256 MiB as RGBA8)
+ * bounds what one texture may cost. Every image backend applies both. */
+#define SCN_IMAGE_MAX_SIDE 16384u
+#define SCN_IMAGE_MAX_PIXELS (1u << 26)
 
 /* Reads an image file into a new RGBA8 buffer (*width * *height * 4 bytes,
  * rows top to bottom; missing channels: grey -> RGB, alpha = 255). Free the

@@ -53,9 +53,15 @@ static bool _scn_parse_params(const char* spec, const char* query, builtin_param
         size_t key_len = (size_t)(eq - query), value_len = len - key_len - 1;
         uint64_t value = 0;
         bool ok = _scn_parse_u64(eq + 1, value_len, &value);
-        if (key_len == 4 && strncmp(query, "seed", 4) == 0 && ok) {
+        bool is_seed = key_len == 4 && strncmp(query, "seed", 4) == 0;
+        bool is_tris = key_len == 4 && strncmp(query, "tris", 4) == 0;
+        if ((is_seed && p->has_seed) || (is_tris && p->has_tris)) {
+            snprintf(err, err_size, "%s: parameter '%.*s' given twice", spec, (int)key_len, query);
+            return false;
+        }
+        if (is_seed && ok) {
             p->seed = value, p->has_seed = true;
-        } else if (key_len == 4 && strncmp(query, "tris", 4) == 0 && ok) {
+        } else if (is_tris && ok) {
             p->tris = value, p->has_tris = true;
         } else {
             snprintf(err, err_size, "%s: bad parameter '%.*s' (expected seed=<u64> or tris=<count>)", spec, (int)len, query);

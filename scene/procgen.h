@@ -18,7 +18,7 @@
 #include "rng.h"
 
 /* Uniform float in [lo, hi) from the top 24 bits: exact in float. */
-float scn_rng_range(pred_rng* rng, float lo, float hi);
+float scn_rng_range(tv_rng* rng, float lo, float hi);
 
 /* Procedural 256x256 RGBA8 textures. */
 typedef enum scn_gen_texture {

@@ -21,7 +21,7 @@
 
 typedef struct city {
     scn_builder* b;
-    pred_rng rng;
+    tv_rng rng;
     float cell; /* facade window cell width, metres */
     uint32_t asphalt, pavement, walls[3], glass, roof, metal, awning, foliage;
 } city;
@@ -123,7 +123,7 @@ static void _building(city* c, float x0, float x1, float y0, float y1, float z0,
 
 static void _rooftop_units(city* c, float x0, float x1, float y, float z0, float z1)
 {
-    uint32_t units = pred_rng_u32(&c->rng) % 3;
+    uint32_t units = tv_rng_u32(&c->rng) % 3;
     for (uint32_t k = 0; k < units; k++) {
         float sx = scn_rng_range(&c->rng, 1.5f, 4.0f), sz = scn_rng_range(&c->rng, 1.5f, 4.0f);
         float cx = scn_rng_range(&c->rng, x0 + sx, x1 - sx), cz = scn_rng_range(&c->rng, z0 + sz, z1 - sz);
@@ -134,7 +134,7 @@ static void _rooftop_units(city* c, float x0, float x1, float y, float z0, float
 
 static uint32_t _wall(city* c)
 {
-    return c->walls[pred_rng_u32(&c->rng) % 3];
+    return c->walls[tv_rng_u32(&c->rng) % 3];
 }
 
 /* Awning over the ground floor of the lot side facing -z, 4.6 m from the street centre. */
@@ -166,7 +166,7 @@ static void _park(city* c, float bx, float bz)
         }
         scn_gen_box(c->b, lo, hi, SCN_FACE_ALL, 4.0f, c->metal);
     }
-    uint32_t trees = 3 + pred_rng_u32(&c->rng) % 5;
+    uint32_t trees = 3 + tv_rng_u32(&c->rng) % 5;
     for (uint32_t k = 0; k < trees; k++) {
         float tx = bx + scn_rng_range(&c->rng, 10.0f, 30.0f), tz = bz + scn_rng_range(&c->rng, 10.0f, 30.0f);
         float h = scn_rng_range(&c->rng, 4.0f, 9.0f), r = scn_rng_range(&c->rng, 1.5f, 3.0f);
@@ -205,7 +205,7 @@ static void _block(city* c, int bi, int bj)
     }
     if (r < 0.4f) { /* stepped tiers */
         float y = 0.0f;
-        uint32_t tiers = 2 + pred_rng_u32(&c->rng) % 2;
+        uint32_t tiers = 2 + tv_rng_u32(&c->rng) % 2;
         uint32_t wall = _wall(c);
         for (uint32_t t = 0; t < tiers; t++) {
             float inset = 6.0f + 3.0f * t, h = scn_rng_range(&c->rng, 6.0f, 18.0f);
@@ -248,7 +248,7 @@ static void _ground(city* c, int n)
 static void _city_emit(scn_builder* b, uint64_t seed, int n, float cell)
 {
     city c = { .b = b, .cell = cell };
-    pred_rng_seed(&c.rng, seed, 0xC17);
+    tv_rng_seed(&c.rng, seed, 0xC17);
     scn_gen_add_textures(b);
     c.asphalt = scn_gen_material(b, "asphalt", SCN_GEN_TEX_CONCRETE, 0.35f, 0.35f, 0.38f, false);
     c.pavement = scn_gen_material(b, "pavement", SCN_GEN_TEX_TILES, 0.8f, 0.78f, 0.72f, false);

@@ -5,9 +5,9 @@
 #include <math.h>
 #include <stdio.h>
 
-float scn_rng_range(pred_rng* rng, float lo, float hi)
+float scn_rng_range(tv_rng* rng, float lo, float hi)
 {
-    return lo + (hi - lo) * (float)(pred_rng_u32(rng) >> 8) * (1.0f / 16777216.0f);
+    return lo + (hi - lo) * (float)(tv_rng_u32(rng) >> 8) * (1.0f / 16777216.0f);
 }
 
 uint32_t scn_gen_material(scn_builder* b, const char* name, int32_t texture, float r, float g, float bl,

@@ -15,7 +15,7 @@ static const float room_x[4] = { -18.0f, -6.0f, 6.0f, 18.0f };
 
 typedef struct interior {
     scn_builder* b;
-    pred_rng rng;
+    tv_rng rng;
     uint32_t floor, wall, ceiling, column, furniture, partition;
 } interior;
 
@@ -71,9 +71,9 @@ static void _room(interior* in, float cx, float s)
     float pz0 = s > 0 ? 7.0f : -10.0f;
     float o[3] = { cx - 3.2f, 0, pz0 }, u[3] = { 0, 0, 3.0f }, v[3] = { 0, 2.0f, 0 }; /* z x y = -x */
     scn_gen_quad(in->b, o, v, u, 2, 3, in->partition);
-    uint32_t pieces = 1 + pred_rng_u32(&in->rng) % 3;
+    uint32_t pieces = 1 + tv_rng_u32(&in->rng) % 3;
     for (uint32_t k = 0; k < pieces; k++) {
-        float side = (pred_rng_u32(&in->rng) & 1) ? 1.0f : -1.0f;
+        float side = (tv_rng_u32(&in->rng) & 1) ? 1.0f : -1.0f;
         float w = scn_rng_range(&in->rng, 0.6f, 1.4f), d = scn_rng_range(&in->rng, 0.5f, 1.2f);
         float h = scn_rng_range(&in->rng, 0.5f, 1.9f);
         float x_near = cx + side * scn_rng_range(&in->rng, 1.0f, 3.8f - w);
@@ -86,7 +86,7 @@ static void _room(interior* in, float cx, float s)
 void scn_gen_interior(scn_builder* b, uint64_t seed)
 {
     interior in = { .b = b };
-    pred_rng_seed(&in.rng, seed, 0x1A7);
+    tv_rng_seed(&in.rng, seed, 0x1A7);
     scn_gen_add_textures(b);
     float tint = scn_rng_range(&in.rng, 0.85f, 1.0f);
     in.floor = scn_gen_material(b, "floor", SCN_GEN_TEX_WOOD, 1.0f, 1.0f, 1.0f, false);

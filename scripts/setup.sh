@@ -6,7 +6,7 @@ set -eu
 
 PACKAGES="cmake make gcc g++ pkg-config glslang-tools libvulkan-dev mesa-vulkan-drivers
 vulkan-validationlayers libglfw3-dev libcglm-dev libtinygltf-dev nlohmann-json3-dev
-libopenimageio-dev openimageio-tools gnuplot-nox xvfb xauth"
+libopenimageio-dev openimageio-tools gnuplot-nox xvfb xauth parallel libpng-dev libjpeg-dev ${TRIMVR_EXTRA_PACKAGES:-}"
 
 missing=""
 for p in $PACKAGES; do

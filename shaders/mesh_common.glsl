@@ -4,7 +4,7 @@
 #ifndef TV_MESH_COMMON_GLSL
 #define TV_MESH_COMMON_GLSL
 
-#include "config.h"
+#include "mesh_shared.h"
 
 struct tv_material_gpu {
     vec4 base_color;    // linear RGBA factor

@@ -3,8 +3,8 @@
 #ifndef TV_PVS_COMMON_GLSL
 #define TV_PVS_COMMON_GLSL
 
-#include "config.h"
-#include "pvs_layout.glsl"
+#include "mesh_shared.h"
+#include "pvs_shared.h"
 
 // Vertex shaders define PVS_RW as readonly before including this file: the
 // device enables fragment but not vertex-stage stores.
@@ -17,7 +17,8 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
     vec4 apex, forward, right, up;
     float tan_half_x, tan_half_y, tan_alpha, far_dist;
     float near_dist, delta, focal_px, max_width;
-    uint width, height, k, triangle_count;
+    uint width, height, k, triangle_count; // width, height: the whole image
+    uint tile_x, tile_y, tile_w, tile_h;    // the tile being computed (pvs/tiles.h): per-pixel buffers index it
 } view;
 
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ADJ) readonly buffer pvs_adj_buf { uint adjacency[]; };

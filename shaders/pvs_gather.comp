@@ -22,15 +22,16 @@ layout(set = TV_PVS_SET, binding = TV_PVS_BIND_VIS_WIDE, r32ui) uniform readonly
 void main()
 {
     uvec2 xy = gl_GlobalInvocationID.xy;
-    if (xy.x >= view.width || xy.y >= view.height)
+    if (xy.x >= view.tile_w || xy.y >= view.tile_h)
         return;
-    uint id = imageLoad(vis_ids, ivec2(xy)).x;
+    ivec2 image_xy = ivec2(xy + uvec2(view.tile_x, view.tile_y)); // the visibility buffers hold the whole image
+    uint id = imageLoad(vis_ids, image_xy).x;
     if (id != TV_NO_TRIANGLE)
         tri_flags[id] = 1u;
-    id = imageLoad(vis_wide, ivec2(xy)).x;
+    id = imageLoad(vis_wide, image_xy).x;
     if (id != TV_NO_TRIANGLE)
         tri_flags[id] = 1u;
-    uint p = xy.y * view.width + xy.x;
+    uint p = xy.y * view.tile_w + xy.x;
     uvec4 st = pixstate[p];
     float hide_begin = uintBitsToFloat(st.z), hide_end = uintBitsToFloat(st.w);
     for (uint c = 0u; st.x != TV_STENCIL_SEALED && c < st.y; c++) {

@@ -6,7 +6,9 @@
 
 #include "pvs_common.glsl"
 
-uint pvs_pixel() { return uint(gl_FragCoord.y) * view.width + uint(gl_FragCoord.x); }
+// A tile renders the whole image with a scissor (pvs/tiles.h): the per-pixel
+// buffers hold the tile, row by row.
+uint pvs_pixel() { return (uint(gl_FragCoord.y) - view.tile_y) * view.tile_w + uint(gl_FragCoord.x) - view.tile_x; }
 
 // Depth stored in every k-buffer: the distance from v* along the view axis
 // (clip w), monotonic along each pixel's ray as resolve.h requires.

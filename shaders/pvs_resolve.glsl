@@ -523,11 +523,11 @@ void finish_pixel(uint seq_len, bool handled)
     for (uint c = 0u; c < carry_count; c++)
         carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
     uvec4 stored = min(cnt, uvec4(view.k));
-    atomicAdd(layer_stats[pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w)); // bytes
-    atomicAdd(layer_stats[pc.layer].y, 1u);
-    atomicAdd(layer_stats[pc.layer].z, seq_len);
+    atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w)); // bytes
+    atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].y, 1u);
+    atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].z, seq_len);
     if (overflowed)
-        atomicAdd(layer_stats[pc.layer].w, 1u);
+        atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].w, 1u);
     active_flag[P] = 0u;
 }
 

@@ -62,7 +62,7 @@ float pvs_plane_depth(vec2 image, vec3 n, vec3 p, float fallback)
 // side's plane lie in front of the slab); y = z = 0 when there is no back
 // neighbour. A border or non-manifold edge has only its own triangle's
 // plane: the trim then ties with the front, and ties sort fronts first
-// (docs/trim-regions.md).
+// (docs/trim-regions.md, "Umbra quad and trim quad").
 vec3 pvs_trim_depth(vec2 image, float edge_depth, vec3 nf, vec3 pf, bool has_back, vec3 nb, vec3 pb)
 {
     float f = pvs_plane_depth(image, nf, pf, edge_depth);

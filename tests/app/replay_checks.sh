@@ -2,10 +2,17 @@
 # Assertions on `trimvr replay` outputs, in POSIX sh + awk (no Python on a
 # fresh Debian). Usage:
 #   replay_checks.sh summary DIR 'key op value'...   e.g. 'viewcell_miss_frames == 0'
-#       (a null value, written for +inf PSNR, compares as +inf)
+#       ("inf", written for the PSNR of identical images, compares as +inf;
+#       null, a metric that is not a number, fails every comparison;
+#       'psnr_min_db == inf' asserts identical images)
 #   replay_checks.sh csv DIR MIN_ROWS                frames.csv well formed, >= MIN_ROWS rows
 #   replay_checks.sh same DIR1 DIR2                  frames.csv equal except wall-clock columns
 #   replay_checks.sh interrupt DIR SECONDS command...  kill -9 the command mid-run, then check csv
+#   replay_checks.sh sigint DIR SECONDS command...     SIGINT mid-run into a folder holding an older
+#       run's outputs: non-zero exit, "interrupted" on stderr, summary.json marked interrupted with
+#       as many frames as frames.csv has complete rows, and no file of the older run left
+#   replay_checks.sh sigint-render DIR SECONDS command...  SIGINT mid-run of trimvr render: non-zero
+#       exit, "interrupted" on stderr, frames.csv rows complete
 set -u
 mode=$1
 shift
@@ -25,6 +32,42 @@ check_csv() {
               printf "ok: %d well-formed rows\n", NR - 1 }' "$f"
 }
 
+# waits (at most SECONDS) until DIR/frames.csv has a few rows, to interrupt a run mid-way
+wait_rows() {
+    i=0
+    while [ $i -lt $(($2 * 10)) ]; do
+        rows=0
+        [ -f "$1/frames.csv" ] && rows=$(($(wc -l <"$1/frames.csv") - 1))
+        [ "$rows" -ge 4 ] && break
+        sleep 0.1
+        i=$((i + 1))
+    done
+}
+
+# run_and_signal DIR SECONDS SIG command...: runs the command in the background, sends it SIG once
+# DIR/frames.csv has a few rows and waits; sets code (exit status) and msg (stderr)
+run_and_signal() {
+    dir=$1
+    secs=$2
+    sig=$3
+    err=$(mktemp)
+    shift 3
+    "$@" >/dev/null 2>"$err" &
+    pid=$!
+    wait_rows "$dir" "$secs"
+    kill -"$sig" $pid 2>/dev/null || fail "the run finished before it could be interrupted"
+    wait $pid
+    code=$?
+    msg=$(cat "$err")
+    rm -f "$err"
+}
+
+# the checks after SIGINT: a non-zero exit that stderr explains
+check_sigint() {
+    [ "$code" -ne 0 ] || fail "exit status 0 after SIGINT"
+    case "$msg" in *interrupted*) ;; *) fail "stderr does not say the run was interrupted: $msg" ;; esac
+}
+
 case $mode in
 summary)
     dir=$1
@@ -38,8 +81,10 @@ summary)
         awk -v key="$1" -v op="$2" -v want="$3" '
             !found && match($0, "\"" key "\": *[^,}]+") {
                 v = substr($0, RSTART, RLENGTH); sub(/^[^:]*: */, "", v); found = 1
-                inf = (v == "null"); x = v + 0
-                if (op == "==") ok = !inf && x == want
+                inf = (v == "\"inf\""); x = v + 0
+                if (v == "null" || (v !~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/ && !inf)) ok = 0
+                else if (want == "inf") ok = inf && op == "=="
+                else if (op == "==") ok = !inf && x == want
                 else if (op == ">=") ok = inf || x >= want
                 else if (op == "<=") ok = !inf && x <= want
                 else if (op == ">") ok = inf || x > want
@@ -77,21 +122,36 @@ interrupt)
     secs=$2
     shift 2
     rm -rf "$dir"
-    "$@" >/dev/null 2>&1 &
-    pid=$!
-    i=0
-    # wait until a few rows exist, then kill hard mid-run
-    while [ $i -lt $((secs * 10)) ]; do
-        rows=0
-        [ -f "$dir/frames.csv" ] && rows=$(($(wc -l <"$dir/frames.csv") - 1))
-        [ "$rows" -ge 4 ] && break
-        sleep 0.1
-        i=$((i + 1))
-    done
-    kill -9 $pid 2>/dev/null || fail "the replay finished before it could be interrupted"
-    wait $pid 2>/dev/null
+    run_and_signal "$dir" "$secs" KILL "$@" # hard, mid-run
     [ -f "$dir/summary.json" ] && fail "summary.json exists: the run was not interrupted"
     check_csv "$dir" 4
+    ;;
+sigint)
+    dir=$1
+    secs=$2
+    shift 2
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    echo '{"frames": 999}' >"$dir/summary.json"
+    echo stale >"$dir/plot_psnr.png"
+    run_and_signal "$dir" "$secs" INT "$@"
+    check_sigint
+    [ -f "$dir/plot_psnr.png" ] && fail "the older run's plot_psnr.png is still there"
+    rows=$(($(wc -l <"$dir/frames.csv") - 1))
+    grep -q '"interrupted": true' "$dir/summary.json" || fail "summary.json is not marked \"interrupted\": true"
+    sh "$0" summary "$dir" "frames == $rows" || exit 1
+    check_csv "$dir" 4
+    echo "ok: exit $code, $rows rows: $msg"
+    ;;
+sigint-render)
+    dir=$1
+    secs=$2
+    shift 2
+    rm -rf "$dir"
+    run_and_signal "$dir" "$secs" INT "$@"
+    check_sigint
+    check_csv "$dir" 4
+    echo "ok: exit $code: $msg"
     ;;
 *)
     fail "unknown mode $mode"

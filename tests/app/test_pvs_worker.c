@@ -30,10 +30,11 @@ static void sleep_ms(double ms)
 }
 
 /* "PVS" = the triangles 0..(delta*100): lets the test check the result belongs to its viewcell */
-static bool fake_compute(void* user, const pred_viewcell* vc, const void* extra, uint32_t** ids, uint32_t* count, void* stats,
-                         char* err, size_t err_size)
+static bool fake_compute(void* user, const void* extra, uint32_t** ids, uint32_t* count, void* stats, char* err,
+                         size_t err_size)
 {
     fake* f = user;
+    const pred_viewcell* vc = extra;
     atomic_fetch_add(&f->calls, 1);
     sleep_ms(f->sleep_ms);
     for (int i = 0; i < 2000 && atomic_load(&f->hold); i++)
@@ -61,17 +62,23 @@ static pred_viewcell cell(float delta)
     return vc;
 }
 
+/* The viewcell travels as the request (extra) and as the result's viewcell. */
+static void submit(tv_worker* w, float delta, double t_request)
+{
+    pred_viewcell vc = cell(delta);
+    tv_worker_submit(w, &vc, &vc, t_request);
+}
+
 static void test_fixed_latency(void)
 {
     fake f = {.sleep_ms = 20, .hold = 1};
     tv_worker_desc d = {.compute = fake_compute, .user = &f, .stats_size = sizeof(fake_stats),
-                        .model = TV_LATENCY_FIXED, .fixed_latency_s = 0.05};
+                        .extra_size = sizeof(pred_viewcell), .model = TV_LATENCY_FIXED, .fixed_latency_s = 0.05};
     char err[256];
     tv_worker* w = tv_worker_start(&d, err, sizeof err);
     TV_CHECK(w != NULL);
     tv_pvs_result r;
-    pred_viewcell vc = cell(0.07f);
-    tv_worker_submit(w, &vc, NULL, 1.0);
+    submit(w, 0.07f, 1.0);
     TV_CHECK(tv_worker_busy(w));
     /* before its availability time the poll returns without waiting for the
      * compute, which is still held: it cannot have finished */
@@ -90,7 +97,7 @@ static void test_fixed_latency(void)
     /* nothing in flight: poll returns 0 */
     TV_CHECK(tv_worker_poll(w, 5.0, &r, err, sizeof err) == 0);
     /* a second request gets the next id */
-    tv_worker_submit(w, &(pred_viewcell){.delta = 0.02f}, NULL, 2.0);
+    submit(w, 0.02f, 2.0);
     TV_CHECK(tv_worker_wait(w, &r, err, sizeof err) == 1 && r.id == 1 && r.count == 2);
     tv_pvs_result_free(&r);
     tv_worker_stop(w);
@@ -101,11 +108,11 @@ static void test_measured_latency(void)
 {
     fake f = {.sleep_ms = 40};
     tv_worker_desc d = {.compute = fake_compute, .user = &f, .stats_size = sizeof(fake_stats),
-                        .model = TV_LATENCY_MEASURED, .factor = 0.5};
+                        .extra_size = sizeof(pred_viewcell), .model = TV_LATENCY_MEASURED, .factor = 0.5};
     char err[256];
     tv_worker* w = tv_worker_start(&d, err, sizeof err);
     tv_pvs_result r;
-    tv_worker_submit(w, &(pred_viewcell){.delta = 0.03f}, NULL, 0.0);
+    submit(w, 0.03f, 0.0);
     /* 40 ms of compute at factor 0.5 is due 20 ms after the request: at 5 ms
      * it cannot be (the poll gives up once 10 ms of compute have passed) */
     TV_CHECK(tv_worker_poll(w, 0.005, &r, err, sizeof err) == 0);
@@ -121,17 +128,17 @@ static void test_failure_and_stop_in_flight(void)
 {
     fake f = {.sleep_ms = 5, .fail = true};
     tv_worker_desc d = {.compute = fake_compute, .user = &f, .stats_size = sizeof(fake_stats),
-                        .model = TV_LATENCY_FIXED, .fixed_latency_s = 0.0};
+                        .extra_size = sizeof(pred_viewcell), .model = TV_LATENCY_FIXED, .fixed_latency_s = 0.0};
     char err[256] = "";
     tv_worker* w = tv_worker_start(&d, err, sizeof err);
     tv_pvs_result r;
-    tv_worker_submit(w, &(pred_viewcell){.delta = 0.01f}, NULL, 0.0);
+    submit(w, 0.01f, 0.0);
     TV_CHECK(tv_worker_poll(w, 0.0, &r, err, sizeof err) == -1);
     TV_CHECK(strcmp(err, "fake failure") == 0);
     TV_CHECK(!tv_worker_busy(w));
     f.fail = false;
     f.sleep_ms = 30;
-    tv_worker_submit(w, &(pred_viewcell){.delta = 0.01f}, NULL, 0.0);
+    submit(w, 0.01f, 0.0);
     tv_worker_stop(w); /* clean shutdown with a job in flight: no leak, no hang */
 }
 

@@ -84,8 +84,34 @@ static void test_mkdirs(void)
     TV_CHECK(!tv_mkdirs(file));
 }
 
+/* Student t quantiles against published tables (4 decimals), and both
+ * intervals on samples small enough to work by hand. */
+static void test_confidence_intervals(void)
+{
+    TV_CHECK_NEAR(tv_t975(1), 12.7062, 0);
+    TV_CHECK_NEAR(tv_t975(4), 2.7764, 0);
+    TV_CHECK_NEAR(tv_t975(31), 2.0395, 1e-4);
+    TV_CHECK_NEAR(tv_t975(40), 2.0211, 1e-4);
+    TV_CHECK_NEAR(tv_t975(60), 2.0003, 1e-4);
+    TV_CHECK_NEAR(tv_t975(120), 1.9799, 1e-4);
+    TV_CHECK(isnan(tv_t975(0)));
+    /* 1..5: mean 3, s^2 = 10 / 4, half-width 2.7764 sqrt(2.5 / 5) */
+    const double v[5] = {1, 2, 3, 4, 5};
+    TV_CHECK_NEAR(tv_mean_ci95(v, 5), 2.7764 * sqrt(0.5), 1e-12);
+    TV_CHECK(isnan(tv_mean_ci95(v, 1)));
+    /* x exactly proportional to y: no spread of the ratio */
+    const double x[3] = {2, 4, 6}, y[3] = {1, 2, 3};
+    TV_CHECK_NEAR(tv_ratio_ci95(x, y, 3), 0.0, 1e-12);
+    /* constant y = 2: the ratio's interval is the mean's over 2 */
+    const double x4[4] = {1, 2, 3, 6}, two[4] = {2, 2, 2, 2}, zero[4] = {0, 0, 0, 0};
+    TV_CHECK_NEAR(tv_ratio_ci95(x4, two, 4), tv_mean_ci95(x4, 4) / 2.0, 1e-12);
+    TV_CHECK_NEAR(tv_mean_ci95(x4, 4), 3.1824 * sqrt(14.0 / 3.0 / 4.0), 1e-12);
+    TV_CHECK(isnan(tv_ratio_ci95(x4, zero, 4)));
+}
+
 int main(void)
 {
+    TV_TEST_RUN(test_confidence_intervals);
     TV_TEST_RUN(test_percentile_known_values);
     TV_TEST_RUN(test_percentile_with_infinity);
     TV_TEST_RUN(test_log_sink_and_level);

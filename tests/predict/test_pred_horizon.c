@@ -111,11 +111,11 @@ static void test_omni_faces_cover_every_direction(void)
         TV_CHECK_NEAR(fu, 0.0, 1e-6);
         TV_CHECK_NEAR(ff, i == 0 ? 1.0 : i == 1 ? -1.0 : 0.0, 1e-6);
     }
-    pred_rng rng;
-    pred_rng_seed(&rng, 3, 4);
+    tv_rng rng;
+    tv_rng_seed(&rng, 3, 4);
     double ta = tan(PRED_VC_OMNI_HALF_DEG * PRED_DEG);
     for (int j = 0; j < 20000; j++) {
-        double d[3] = {pred_rng_range(&rng, -1, 1), pred_rng_range(&rng, -1, 1), pred_rng_range(&rng, -1, 1)};
+        double d[3] = {tv_rng_range(&rng, -1, 1), tv_rng_range(&rng, -1, 1), tv_rng_range(&rng, -1, 1)};
         int in = 0;
         for (int i = 0; i < PRED_VC_OMNI_FRUSTA; i++) {
             const float *f = faces[i].forward, *u = faces[i].up;
@@ -148,16 +148,16 @@ static void test_full_turn_is_covered(void)
     TV_CHECK(pred_viewcell_size(&desc, &p, NULL, 1.0, &vc));
     printf("  full turn: %d frusta, delta %.3f m, rotation bound %.1f deg\n", vc.frusta, vc.delta, vc.rot_bound_deg);
     TV_CHECK(vc.frusta == PRED_VC_OMNI_FRUSTA && !vc.clamped);
-    pred_rng rng;
-    pred_rng_seed(&rng, 5, 6);
+    tv_rng rng;
+    tv_rng_seed(&rng, 5, 6);
     int missed = 0, tested = 0;
     for (double t = vc.t_begin; t <= vc.t_end + 1e-9; t += 0.002) {
         pred_pose head = {.t = t, .p = {1, 1.7, 2}}, eyes[2];
         pred_quat_from_ypr(rate * t, 0, 0, head.q);
         pred_eye_poses(&head, 0.063, eyes);
         for (int e = 0; e < 2; e++) {
-            double q[4] = {pred_rng_range(&rng, -1, 1), pred_rng_range(&rng, -1, 1), pred_rng_range(&rng, -1, 1),
-                           pred_rng_range(&rng, -1, 1)};
+            double q[4] = {tv_rng_range(&rng, -1, 1), tv_rng_range(&rng, -1, 1), tv_rng_range(&rng, -1, 1),
+                           tv_rng_range(&rng, -1, 1)};
             pred_quat_normalize(q);
             missed += !pred_viewcell_contains(&vc, eyes[e].p, eyes[e].q, 60, 60, NULL);
             missed += !pred_viewcell_contains(&vc, eyes[e].p, q, 60, 60, NULL);

@@ -68,11 +68,14 @@ static void test_errors_name_file_and_line(void)
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,1.5x,0,0,0,1\n", ":2: unparsable number '1.5x'"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,nan,0,0,0,0,0,1\n", ":2: non-finite value 'nan' in column px"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,0,0,inf,0,0,0,1\n", ":3: non-finite value 'inf' in column pz"},
+        {"t,px,py,pz,qx,qy,qz,qw\n0,0,1e300,0,0,0,0,1\n", ":2: position 1e+300 in column py is beyond 1e+06 m"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,0.3\n", ":2: quaternion norm 0.3"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,2,0,0,1\n", ":2: quaternion norm"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n#x\n0.5,0,0,0,0,0,0,1\n0.2,0,0,0,0,0,0,1\n",
          ":5: time 0.2 goes backwards (previous 0.5 on line 4)"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n0,0,0,0,0,0,0,1\n", ":3: duplicate time 0 (also on line 2)"},
+        /* a file cut in its last number ("0.9" of "0.95") still parses: refuse a last row without newline */
+        {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,0,0,0,0,0,0,0.9", ":3: last line has no newline"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         pred_path path;
@@ -216,18 +219,18 @@ static void test_mutations(void)
     const char* good = "# scene: s\nt,px,py,pz,qx,qy,qz,qw\n0,1,2,3,0,0,0,1\n0.01,1.5,2,3,0,0.1,0,1\n"
                        "#c\n0.02,-1e3,2e-3,3,0.2,0,0,1\n0.5,0,0,0,0,0,1,0\n";
     const char alphabet[] = "0123456789.,-+e#\n\r nNaIf";
-    pred_rng rng;
-    pred_rng_seed(&rng, 77, 0);
+    tv_rng rng;
+    tv_rng_seed(&rng, 77, 0);
     char text[256];
     int loaded = 0, failed = 0, bad = 0;
     for (int iter = 0; iter < 3000; iter++) {
         size_t n = strlen(good);
         memcpy(text, good, n + 1);
-        int edits = 1 + (int)(pred_rng_u32(&rng) % 3);
+        int edits = 1 + (int)(tv_rng_u32(&rng) % 3);
         for (int e = 0; e < edits; e++)
-            text[pred_rng_u32(&rng) % n] = alphabet[pred_rng_u32(&rng) % (sizeof alphabet - 1)];
-        if (pred_rng_u32(&rng) % 4 == 0)
-            text[pred_rng_u32(&rng) % n] = '\0';
+            text[tv_rng_u32(&rng) % n] = alphabet[tv_rng_u32(&rng) % (sizeof alphabet - 1)];
+        if (tv_rng_u32(&rng) % 4 == 0)
+            text[tv_rng_u32(&rng) % n] = '\0';
         pred_path path;
         char err[256] = "";
         if (_load_text(text, &path, err, sizeof err)) {

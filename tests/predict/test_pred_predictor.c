@@ -176,16 +176,16 @@ typedef struct jerky {
 
 static void _jerky_build(jerky* j, double A, uint64_t seed)
 {
-    pred_rng rng;
-    pred_rng_seed(&rng, seed, 1);
+    tv_rng rng;
+    tv_rng_seed(&rng, seed, 1);
     j->A = A;
     j->segments = 400;
     double t = 0.0, p[3] = {0, 1.7, 0}, v[3] = {0.5, 0, -0.3};
     for (int s = 0; s < j->segments; s++) {
         j->t[s] = t;
-        double dur = pred_rng_range(&rng, 0.02, 0.08);
+        double dur = tv_rng_range(&rng, 0.02, 0.08);
         for (int k = 0; k < 3; k++) {
-            j->a[s][k] = pred_rng_uniform(&rng) < 0.5 ? -A : A;
+            j->a[s][k] = tv_rng_uniform(&rng) < 0.5 ? -A : A;
             j->p[s][k] = p[k];
             j->v[s][k] = v[k];
             p[k] += v[k] * dur + 0.5 * j->a[s][k] * dur * dur;
@@ -243,12 +243,12 @@ static void test_tracker_quantiles(void)
     pred_error_tracker tr;
     TV_CHECK(pred_error_tracker_init(&tr, &(pred_error_tracker_desc){.window = 100}));
     TV_CHECK(tr.horizon_count == 10 && fabs(tr.horizons_s[9] - 0.1) < 1e-12);
-    pred_rng rng;
-    pred_rng_seed(&rng, 5, 0);
+    tv_rng rng;
+    tv_rng_seed(&rng, 5, 0);
     double values[1000], ref[100], all_max = 0.0;
     for (int i = 0; i < 1000; i++) {
         /* drifting distribution: the window must forget old values */
-        values[i] = pred_rng_uniform(&rng) * (1.0 + i / 100.0) + (i == 123 ? 50.0 : 0.0);
+        values[i] = tv_rng_uniform(&rng) * (1.0 + i / 100.0) + (i == 123 ? 50.0 : 0.0);
         all_max = fmax(all_max, values[i]);
         pred_error_tracker_record(&tr, 3, values[i], 2.0 * values[i]);
         if (i % 97 == 0 || i == 999) {

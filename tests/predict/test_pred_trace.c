@@ -75,6 +75,20 @@ static void test_hololens_excerpt(void)
     pred_path_free(&p);
 }
 
+/* The excerpt plus a row cut in its last number (qw 0.995 written as far as
+ * "0.9"): the cut row still parses to a plausible pose, so it must be dropped. */
+static void test_cut_last_line(void)
+{
+    pred_path p;
+    pred_trace_report rep;
+    TV_CHECK(import(fixture("hololens-cut.csv"), PRED_TRACE_AUTO, &p, &rep));
+    TV_CHECK(rep.rows == 7 && rep.cut_line == 9);
+    TV_CHECK(p.count == 5);
+    if (p.count == 5)
+        TV_CHECK_NEAR(p.poses[4].t, 0.1666667, 1e-9); /* the kept rows are those of the whole excerpt */
+    pred_path_free(&p);
+}
+
 static void test_optitrack_excerpt(void)
 {
     pred_path p;
@@ -182,12 +196,14 @@ typedef struct real_trace {
     double duration_s;
     double speed_p50[2], speed_p99[2]; /* the README's ranges, widened by half */
     bool neck_test;                    /* enough rotation about a still neck to fit */
+    size_t cut_line;                   /* a last line without newline, dropped */
 } real_trace;
 
 static const real_trace k_real[] = {
     {"hololens_pred6dof/1.csv", PRED_TRACE_HOLOLENS, 4664, 77.70, {0.15, 0.7}, {0.45, 1.65}, true},
     {"hololens_pred6dof/3.csv", PRED_TRACE_HOLOLENS, 3986, 66.42, {0.15, 0.7}, {0.45, 1.65}, true},
-    {"hololens_pred6dof/4.csv", PRED_TRACE_HOLOLENS, 4417, 73.59, {0.15, 0.7}, {0.45, 1.65}, true},
+    /* ends without a newline: its last row is dropped in case it was cut */
+    {"hololens_pred6dof/4.csv", PRED_TRACE_HOLOLENS, 4416, 73.58, {0.15, 0.7}, {0.45, 1.65}, true, 4418},
     {"hololens_pred6dof/5.csv", PRED_TRACE_HOLOLENS, 4359, 72.67, {0.15, 0.7}, {0.45, 1.65}, true},
     {"hololens_pred6dof/6.csv", PRED_TRACE_HOLOLENS, 4375, 72.91, {0.15, 0.7}, {0.45, 1.65}, true},
     {"optitrack_spacepirate/real_world_head_movement_example_0_rigid_body_0.csv", PRED_TRACE_OPTITRACK, 13479,
@@ -207,7 +223,7 @@ static void test_real_traces(void)
         if (!p.count)
             continue;
         TV_CHECK(rep.format == rt->format);
-        TV_CHECK(rep.rows == rt->rows && rep.dropped == 0);
+        TV_CHECK(rep.rows == rt->rows && rep.dropped == 0 && rep.cut_line == rt->cut_line);
         TV_CHECK(p.count == rep.rows - rep.dropped);
         TV_CHECK_NEAR(pred_path_duration(&p), rt->duration_s, 0.01);
         bool increasing = true;
@@ -265,6 +281,7 @@ int main(void)
     const char* src = getenv("TRIMVR_SOURCE_DIR");
     snprintf(g_fixtures, sizeof g_fixtures, "%s/tests/predict/fixtures", src ? src : ".");
     TV_TEST_RUN(test_hololens_excerpt);
+    TV_TEST_RUN(test_cut_last_line);
     TV_TEST_RUN(test_optitrack_excerpt);
     TV_TEST_RUN(test_quest_excerpt);
     TV_TEST_RUN(test_malformed);

@@ -136,12 +136,12 @@ static void test_frustum_boundary(void)
 }
 
 /* Random unit vector. */
-static void _rand_dir(pred_rng* rng, double d[3])
+static void _rand_dir(tv_rng* rng, double d[3])
 {
     double n;
     do {
         for (int k = 0; k < 3; k++)
-            d[k] = pred_rng_range(rng, -1, 1);
+            d[k] = tv_rng_range(rng, -1, 1);
         n = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     } while (n < 0.1 || n > 1.0);
     for (int k = 0; k < 3; k++)
@@ -164,8 +164,8 @@ static void test_adaptive_alpha_is_tight(void)
     pred_viewcell narrower = vc;
     narrower.fov_pvs_deg -= 0.3f;
     narrower.z = (float)(narrower.delta / tan(0.5 * narrower.fov_pvs_deg * PRED_DEG));
-    pred_rng rng;
-    pred_rng_seed(&rng, 1, 2);
+    tv_rng rng;
+    tv_rng_seed(&rng, 1, 2);
     int missed_wide = 0, missed_narrow = 0;
     double eye[3] = {vc.v0[0], vc.v0[1], vc.v0[2]};
     for (int i = 0; i < 20000; i++) {
@@ -206,8 +206,8 @@ static void test_sizing_covers_predicted_eyes(void)
     TV_CHECK_NEAR(vc.z, vc.delta / tan(0.5 * vc.fov_pvs_deg * PRED_DEG), 1e-6);
     /* every predicted eye, and eyes displaced by up to pos_err and turned by up
      * to rot_err from them, are covered */
-    pred_rng rng;
-    pred_rng_seed(&rng, 9, 9);
+    tv_rng rng;
+    tv_rng_seed(&rng, 9, 9);
     int missed = 0, tested = 0;
     for (int i = 0; i < 9; i++) {
         pred_pose eyes[2];

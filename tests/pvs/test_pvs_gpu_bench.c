@@ -1,9 +1,10 @@
 /* test_pvs_gpu_bench.c - timings of the GPU PVS next to a full-scene draw
- * at the same resolution (docs/trim-regions.md, "GPU passes"). Arguments:
- * scene spec, then v0 x y z and the forward vector (defaults: builtin:city
- * from a street). Checks that a render of the PVS from the apex equals the
- * full render's depth at every pixel and that no validation message
- * appeared; prints medians over the runs. */
+ * at the same resolution (docs/pvs-gpu-passes.md; earlier figures in
+ * docs/journal/2026-11-23-pvs-timings.md). Arguments: scene spec, then v0
+ * x y z and the forward vector (defaults: builtin:city from a street).
+ * Checks that a render of the PVS from the apex equals the full render's
+ * depth at every pixel and that no validation message appeared; prints
+ * medians over the runs. */
 #include "pvs.h"
 #include "render_fixture.h"
 #include "test.h"

@@ -199,6 +199,7 @@ static void upload(pvs_context* ctx, const case_data* c)
     pvs_view_gpu* view = ctx->buffers[TV_PVS_BIND_VIEW].mapped;
     memset(view, 0, sizeof *view);
     view->width = view->height = SIDE;
+    view->tile_w = view->tile_h = SIDE; /* one tile */
     view->k = k;
     view->triangle_count = ctx->triangle_count;
 }

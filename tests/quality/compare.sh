@@ -9,8 +9,11 @@
 # better = higher: regression when got < expected - abs - rel * |expected|
 # better = lower:  regression when got > expected + abs + rel * |expected|
 # better = equal:  regression when got != expected (run settings, such as the frame count)
-# A null value is an infinite PSNR (every frame identical): it is the best
-# possible for "higher" and compares as +inf. update keeps each metric's
+# better = near:   regression when |got - expected| > abs + rel * |expected| (both ways: a
+#                  PVS that shrinks is as suspect as one that grows)
+# "inf" is an infinite PSNR (every frame identical): the best possible for
+# "higher", compared as +inf. null (not a number: a broken metric) and a
+# missing value always fail. update keeps each metric's
 # tolerances and takes new ones from the table below for metrics not yet in
 # the file.
 set -u
@@ -20,12 +23,12 @@ DEFAULTS='frames equal 0 0
 psnr_mean_db higher 0.5 0
 psnr_p5_db higher 1.0 0
 psnr_min_db higher 2.0 0
-fn_pixels_mean lower 2 0.10
-fn_pixels_max lower 10 0.25
+fn_pixels_mean lower 0 0
+fn_pixels_max lower 0 0
 viewcell_miss_frames lower 0 0
-pvs_fraction_mean lower 0.002 0.10'
+pvs_fraction_mean near 0 0.01'
 
-# prints the value of "key" in a flat JSON file (null for an infinite PSNR); exit 1 if absent
+# prints the value of "key" in a flat JSON file ("inf" for an infinite PSNR); exit 1 if absent
 value() {
     awk -v key="$2" '!found && match($0, "\"" key "\": *[^,}]+") {
             v = substr($0, RSTART, RLENGTH); sub(/^[^:]*: */, "", v); print v; found = 1 }
@@ -80,12 +83,15 @@ check)
             a = line; sub(/.*"abs": */, "", a); sub(/[,}].*/, "", a)
             r = line; sub(/.*"rel": */, "", r); sub(/[,}].*/, "", r)
             big = 1e300
-            e = exp_v == "null" ? big : exp_v + 0
-            g = got == "null" ? big : got + 0
+            e = exp_v == "\"inf\"" ? big : exp_v + 0
+            g = got == "\"inf\"" ? big : got + 0
             slack = a + r * (e < 0 ? -e : e)
+            number = "^-?[0-9.]+([eE][-+]?[0-9]+)?$"
             if (got == "missing") { ok = 0; lim = "present" }
+            else if ((got !~ number && got != "\"inf\"") || (exp_v !~ number && exp_v != "\"inf\"")) { ok = 0; lim = "a number" }
             else if (better == "higher") { lim = e >= big ? ">= inf" : sprintf(">= %.4g", e - slack); ok = g >= e - slack }
             else if (better == "lower") { lim = sprintf("<= %.4g", e + slack); ok = g <= e + slack }
+            else if (better == "near") { lim = sprintf("%.4g..%.4g", e - slack, e + slack); ok = g >= e - slack && g <= e + slack }
             else { lim = sprintf("== %s", exp_v); ok = g == e }
             note = ""
             if (ok && better == "higher" && e < big && g > e + slack) note = " (better: consider updating)"

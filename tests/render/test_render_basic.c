@@ -1,12 +1,12 @@
 /* Mesh pass on hand-built scenes: known colours, ids and depths, alpha
  * masking, double-sided lighting. Runs with validation on; any validation
  * warning or error fails the test. */
-#include "config.h"
+#include "mesh_shared.h"
 #include "image_compare.h"
 #include "log.h"
 #include "render_fixture.h"
 #include "test.h"
-#include "vk_internal.h"
+#include "render_vk.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -2,7 +2,7 @@
  * bit-identical to the full render (colour, depth, ids), including
  * equal-depth ties; dropping a visible triangle changes exactly its pixels,
  * and those are the false-negative pixels. */
-#include "config.h"
+#include "mesh_shared.h"
 #include "image_compare.h"
 #include "render_fixture.h"
 #include "test.h"

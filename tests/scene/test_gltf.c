@@ -272,8 +272,9 @@ static void test_embedded_texture(void)
     scn_scene_free(&s);
 }
 
-/* Loading must fail, name the file, stay on one line and leave the scene empty. */
-static void expect_failure(const char* path, const char* what)
+/* Loading must fail, name the file and the problem (`expect`, NULL: any),
+ * stay on one line and leave the scene empty. */
+static void expect_failure(const char* path, const char* what, const char* expect)
 {
     char err[512];
     scn_scene s;
@@ -282,40 +283,97 @@ static void expect_failure(const char* path, const char* what)
     TV_CHECK(!ok);
     TV_CHECK(strstr(err, path) != NULL);
     TV_CHECK(strchr(err, '\n') == NULL);
+    TV_CHECK(!expect || strstr(err, expect));
     TV_CHECK(s.triangle_count == 0 && s.positions == NULL && s.materials == NULL);
     printf("     %s -> %s\n", what, err);
     if (ok)
         scn_scene_free(&s);
 }
 
+/* The test file with the first `from[i]` in its JSON replaced by `to[i]`. */
+static void write_variant(char* path, size_t size, const char* name, const char* const from[2],
+                          const char* const to[2], const char* images)
+{
+    char json[16384], edited[16384], buffer[256], bin_path[512];
+    snprintf(buffer, sizeof buffer, "{\"uri\":\"%s.bin\",\"byteLength\":%d}", name, BIN_SIZE);
+    make_json(edited, sizeof edited, 4, buffer, images);
+    for (int i = 0; i < 2 && from[i]; i++) {
+        memcpy(json, edited, sizeof json);
+        char* at = strstr(json, from[i]);
+        TV_CHECK(at != NULL);
+        if (at)
+            snprintf(edited, sizeof edited, "%.*s%s%s", (int)(at - json), json, to[i], at + strlen(from[i]));
+    }
+    snprintf(path, size, "%s/%s.gltf", dir, name);
+    snprintf(bin_path, sizeof bin_path, "%s/%s.bin", dir, name);
+    write_file(path, edited, strlen(edited));
+    write_file(bin_path, bin, BIN_SIZE);
+}
+
+/* Offsets and counts near 2^64 must not wrap the bounds check (they read
+ * outside the buffer or crashed), a negative offset must not read as 0, and
+ * references to what the file lacks must fail rather than fall back. */
+static void test_bad_references(void)
+{
+    static const char tri_accessor[] = "{\"bufferView\":3,";
+    static const char tri_view[] = "{\"buffer\":0,\"byteOffset\":128,";
+    static const struct {
+        const char* name;
+        const char* from[2];
+        const char* to[2];
+        const char *images, *expect;
+    } cases[] = {
+        { "acc_offset_wrap", { tri_accessor }, { "{\"bufferView\":3,\"byteOffset\":18446744073709551600," }, NULL,
+          "accessor 3 (3 elements at offset 18446744073709551600" },
+        { "view_offset_wrap", { tri_view }, { "{\"buffer\":0,\"byteOffset\":18446744073709551600," }, NULL,
+          "reads past the end of buffer 0" },
+        { "view_offset_negative", { tri_view }, { "{\"buffer\":0,\"byteOffset\":-128," }, NULL,
+          "bufferViews[3].byteOffset is -128, not a non-negative integer" },
+        { "count_huge", { "\"count\":3," }, { "\"count\":4611686018427387904," }, NULL,
+          "(4611686018427387904 elements" },
+        { "material_missing", { "\"material\":0" }, { "\"material\":7" }, NULL, "missing material 7 (the file has 1)" },
+        { "texture_missing", { NULL }, { NULL }, "\"textures\":[],\"images\":[],", "references missing texture 0" },
+        { "image_missing", { NULL }, { NULL }, "\"textures\":[{\"source\":3}],\"images\":[],", "references missing image 3" },
+        { "scene_missing", { "\"scene\":0" }, { "\"scene\":4" }, NULL, "\"scene\" is 4 but the file has 1 scenes" },
+        { "gltf1", { "\"version\":\"2.0\"" }, { "\"version\":\"1.0\"" }, NULL, "is glTF 1.0; trimvr reads glTF 2.0 only" },
+        { "points_only", { "\"nodes\":[0]", "{\"POSITION\":3}}" }, { "\"nodes\":[1]", "{\"POSITION\":3},\"mode\":1}" },
+          NULL, "has only point/line primitives (mode 1)" },
+    };
+    char path[512];
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        write_variant(path, sizeof path, cases[i].name, cases[i].from, cases[i].to, cases[i].images);
+        expect_failure(path, cases[i].name, cases[i].expect);
+    }
+}
+
 static void test_bad_inputs(void)
 {
     char path[512];
     snprintf(path, sizeof path, "%s/does_not_exist.gltf", dir);
-    expect_failure(path, "missing file");
+    expect_failure(path, "missing file", NULL);
     size_t size = write_glb(path, sizeof path, "truncated");
     TV_CHECK(truncate(path, (off_t)(size / 2)) == 0);
-    expect_failure(path, "truncated glb");
+    expect_failure(path, "truncated glb", NULL);
     snprintf(path, sizeof path, "%s/corrupt.gltf", dir);
     write_file(path, "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"mesh\"", 42);
-    expect_failure(path, "corrupt json");
+    expect_failure(path, "corrupt json", NULL);
     write_gltf(path, sizeof path, "past_end", 40, NULL, bin);
-    expect_failure(path, "accessor past buffer end");
+    expect_failure(path, "accessor past buffer end", NULL);
     uint8_t bad[BIN_SIZE];
     memcpy(bad, bin, BIN_SIZE);
     uint32_t big = 99;
     memcpy(bad + 176 + 4, &big, 4);
     write_gltf(path, sizeof path, "index_range", 4, NULL, bad);
-    expect_failure(path, "index out of range");
+    expect_failure(path, "index out of range", NULL);
     memcpy(bad, bin, BIN_SIZE);
     float nan = NAN;
     memcpy(bad + 4, &nan, 4);
     write_gltf(path, sizeof path, "nan", 4, NULL, bad);
-    expect_failure(path, "NaN position");
+    expect_failure(path, "NaN position", NULL);
     write_gltf(path, sizeof path, "no_texture", 4, "\"textures\":[{\"source\":0}],\"images\":[{\"uri\":\"missing.png\"}],", bin);
-    expect_failure(path, "missing texture");
+    expect_failure(path, "missing texture", NULL);
     snprintf(path, sizeof path, "%s/scene.obj", dir);
-    expect_failure(path, "unknown extension");
+    expect_failure(path, "unknown extension", NULL);
 }
 
 int main(void)
@@ -328,6 +386,7 @@ int main(void)
     TV_TEST_RUN(test_texture);
     TV_TEST_RUN(test_embedded_texture);
     TV_TEST_RUN(test_bad_inputs);
+    TV_TEST_RUN(test_bad_references);
     scene_test_dir_remove(dir);
     return tv_test_finish();
 }

@@ -43,7 +43,8 @@ static void test_determinism(void)
 static void test_bad_specs(void)
 {
     const char* bad[] = { "builtin:town", "builtin:city?tris=5", "builtin:city?seed=-1", "builtin:city?seed",
-                          "builtin:city?color=3", "builtin:unit?seed=2", "builtin:interior?tris=100000" };
+                          "builtin:city?color=3", "builtin:unit?seed=2", "builtin:interior?tris=100000",
+                          "builtin:city?seed=1&seed=2", "builtin:city?tris=20000&seed=1&tris=30000" };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         scn_scene s;
         char err[512];

@@ -1,0 +1,22 @@
+/* cli_viewcell.h - viewcells given on the command line (`trimvr pvs`,
+ * `trimvr eval`, `trimvr bench`): a centre, a view direction, Δ and the two
+ * FOVs, with no prediction involved. */
+#ifndef TRIMVR_EVAL_CLI_VIEWCELL_H
+#define TRIMVR_EVAL_CLI_VIEWCELL_H
+
+#include "path.h"
+#include "viewcell.h"
+
+#include <stdbool.h>
+
+/* Builds the double-cone viewcell at pos looking along dir (any length > 0),
+ * up = world +Y made perpendicular (world +Z when dir is vertical), radius
+ * delta, display FOV fov_deg and PVS FOV fov_pvs_deg (square frustum).
+ * False when dir is zero or an angle is out of (0, 180). */
+bool tv_viewcell_make(const float pos[3], const float dir[3], float delta, float fov_deg, float fov_pvs_deg,
+                      pred_viewcell* out);
+
+/* The same at a head pose (position, forward and up of its orientation). */
+void tv_viewcell_at_pose(const pred_pose* head, float delta, float fov_deg, float fov_pvs_deg, pred_viewcell* out);
+
+#endif

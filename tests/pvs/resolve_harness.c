@@ -1,0 +1,45 @@
+#include "resolve_harness.h"
+
+#include <string.h>
+
+/* prior_front / prior_back: P2's nearest front / back depth at the pixel
+ * centre over this and the earlier layers (0: none). */
+layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_back, const item* items,
+                                    uint32_t n)
+{
+    pvs_kbuf k;
+    memset(&k, 0, sizeof k);
+    k.nearest_front = prior_front;
+    k.nearest_back = prior_back;
+    layer_result r = {0};
+    for (uint32_t i = 0; i < n; i++) {
+        if (!pvs_kbuf_push(&k, items[i].kind, items[i].depth, items[i].id) && items[i].kind == TV_ENTRY_FRONT)
+            r.spilled[r.spilled_count++] = items[i].id;
+    }
+    r.count = pvs_resolve_pixel(s, &k, r.out, &r.overflowed);
+    for (uint32_t i = 0, j = 0; i < n; i++) {
+        if (j < r.spilled_count && items[i].kind == TV_ENTRY_FRONT && items[i].id == r.spilled[j])
+            r.spill_out += pvs_spill_output(s, items[i].id, items[i].depth), j++;
+    }
+    return r;
+}
+
+layer_result run_layer(pvs_pixel_state* s, const item* items, uint32_t n)
+{
+    return run_layer_prior(s, 0.0f, 0.0f, items, n);
+}
+
+/* Output equals exactly the ids in `want` (order free). */
+bool same_set(const layer_result* r, const uint32_t* want, uint32_t n)
+{
+    if (r->count != n)
+        return false;
+    for (uint32_t i = 0; i < n; i++) {
+        bool found = false;
+        for (uint32_t j = 0; j < r->count; j++)
+            found |= r->out[j] == want[i];
+        if (!found)
+            return false;
+    }
+    return true;
+}

@@ -1,0 +1,246 @@
+/* Trim-sequence resolve (P3 reference) when lists overflow: every front is
+ * kept, fronts behind the terminator, full umbra, trim and back lists, prior
+ * faces, and a carry that does not fit. */
+#include "resolve_harness.h"
+#include "test.h"
+
+#include <string.h>
+
+static void test_overflow_keeps_every_front(void)
+{
+    item items[TV_K_FRONT + 12 + 4];
+    uint32_t n = 0;
+    items[n++] = (item)F(1.0f, 99);
+    items[n++] = (item)T(1.2f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)U(60.0f, 1);
+    for (uint32_t i = 0; i < TV_K_FRONT + 11; i++)
+        items[n++] = (item)F(2.0f + (float)i, 100 + i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed);
+    TV_CHECK(r.spilled_count == 12 && r.spill_out == 12 && r.count == TV_K_FRONT + 1); /* + the back */
+    bool all = true;
+    for (uint32_t i = 0; i < TV_K_FRONT + 11; i++) {
+        bool found = false;
+        for (uint32_t j = 0; j < r.count; j++)
+            found |= r.out[j] == 100 + i;
+        for (uint32_t j = 0; j < r.spilled_count; j++)
+            found |= r.spilled[j] == 100 + i;
+        all &= found;
+    }
+    TV_CHECK(all);
+    TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW);
+    layer_result r2 = RUN(s, F(50.0f, 7), B(51.0f), F(52.0f, 8), B(53.0f));
+    CHECK_OUT(r2, 7, 8, BACK_ID, BACK_ID); /* 7 would have terminated a normal pixel */
+    TV_CHECK(r2.overflowed && s.stencil == TV_STENCIL_OVERFLOW);
+}
+
+/* A terminator in front of every lost front seals the pixel as usual: the
+ * lost fronts lie behind it and stay out of the PVS. Lost candidates never
+ * send a pixel to the overflow state; at an open pixel they are output. */
+static void test_overflow_behind_terminator(void)
+{
+    item items[TV_K_FRONT + 8];
+    uint32_t n = 0;
+    items[n++] = (item)T(0.5f, 1);
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)B(1.5f);
+    for (uint32_t i = 0; n < TV_K_FRONT + 8; i++)
+        items[n++] = (item)F(2.0f + (float)i, 100 + i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed && r.spilled_count == 6 && r.spill_out == 0); /* behind the terminator */
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 1.0f);
+    /* a lost candidate in front of the terminator would be output */
+    TV_CHECK(pvs_spill_output(&s, 7 | TV_ID_CANDIDATE, 0.8f) && !pvs_spill_output(&s, 7 | TV_ID_CANDIDATE, 1.2f));
+    pvs_pixel_state untrimmed = {0};
+    TV_CHECK(!pvs_spill_output(&untrimmed, 7 | TV_ID_CANDIDATE, 0.8f) && !pvs_spill_output(&untrimmed, 7, 0.8f));
+
+    n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)T(1.2f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)U(60.0f, 1);
+    for (uint32_t i = 0; n < TV_K_FRONT + 8; i++)
+        items[n++] = (item)C(2.0f + (float)i, 100 + i);
+    pvs_pixel_state t = {0};
+    r = run_layer(&t, items, n);
+    TV_CHECK(r.overflowed && r.spilled_count == 5 && r.spill_out == 5); /* the pixel stays open */
+    CHECK_OUT(r, 1); /* the stored candidates lie in the umbra */
+    TV_CHECK(t.stencil == TV_STENCIL_TRIMMED);
+}
+
+/* A lost umbra only shortens a hidden range to its back: the pixel is
+ * resolved as usual (not the all-fronts policy), and reported. */
+static void test_overflow_umbra_list(void)
+{
+    item items[TV_K_UMBRA + 4];
+    uint32_t n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)T(1.2f, 0);
+    items[n++] = (item)B(1.5f);
+    for (uint32_t i = 0; n < TV_K_UMBRA + 4; i++)
+        items[n++] = (item)U(5.0f + (float)i, i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed);
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.stencil == TV_STENCIL_TRIMMED && s.hide_begin == 1.0f && s.hide_end == 5.0f);
+    layer_result r2 = RUN(s, F(4.0f, 2), T(4.2f, 9), B(4.5f), F(6.0f, 3), B(6.5f));
+    CHECK_OUT(r2, 3); /* 2 (eroded) inside region 0's umbra, 3 the terminator */
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* Lost trims: every interval reaching back to the nearest lost trim counts
+ * as validated, hiding up to its back. Alone, F1 would terminate; with trims
+ * lost at 0.5 F1, F2, F3 are output and the pixel stays open; a carried run
+ * gets a stand-in trim that validates it in the next layer. Trims lost
+ * behind an interval cannot have validated it (the sequence is complete in
+ * front of them). */
+static void test_overflow_trim_list(void)
+{
+    item items[TV_K_TRIM + 8];
+    uint32_t n = 0;
+    for (uint32_t i = 0; i <= TV_K_TRIM; i++)
+        items[n++] = (item)T(0.5f, i);
+    const item rest[] = {F(1.0f, 1), B(1.5f), F(2.0f, 2), B(2.5f), F(3.0f, 3), B(3.5f), F(4.0f, 4)};
+    for (uint32_t i = 0; i < sizeof rest / sizeof rest[0]; i++)
+        items[n++] = rest[i];
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed);
+    CHECK_OUT(r, 1, 2, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_TRIMMED && s.carry_count == 2);
+    TV_CHECK(s.carry[1].kind == TV_ENTRY_TRIM && s.carry[1].id == TV_ID_PRIOR && s.carry[1].depth == 4.0f);
+    layer_result r2 = RUN(s, B(4.5f), F(5.0f, 5), B(5.5f), F(6.0f, 6));
+    CHECK_OUT(r2, 4, 5); /* [4, 4.5] validated by the stand-in, 5 terminates */
+    TV_CHECK(!r2.overflowed && s.stencil == TV_STENCIL_SEALED);
+
+    n = 0;
+    for (uint32_t i = 0; i <= TV_K_TRIM; i++)
+        items[n++] = (item)T(5.0f, i);
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)F(2.0f, 2);
+    pvs_pixel_state near = {0};
+    r = run_layer(&near, items, n);
+    CHECK_OUT(r, 1); /* [1, 1.5] lies in front of every lost trim: F1 terminates */
+    TV_CHECK(r.overflowed && near.stencil == TV_STENCIL_SEALED && near.term_depth == 1.0f);
+    /* Which trims behind the nearest lost one found room depends on arrival
+     * order, so they count for nothing: region 7's fragment at 9 (stored)
+     * does not make it straddle [1, 1.5]. The carried F3 gets the stand-in
+     * at its own depth, and the stored trims behind the lost one are not
+     * carried. */
+    n = 0;
+    items[n++] = (item)T(0.5f, 7);
+    items[n++] = (item)T(9.0f, 7);
+    for (uint32_t i = 2; i < TV_K_TRIM; i++)
+        items[n++] = (item)T(0.2f, 100 + i);
+    items[n++] = (item)T(5.0f, 99); /* lost */
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)F(3.0f, 3);
+    pvs_pixel_state run = {0};
+    r = run_layer(&run, items, n);
+    CHECK_OUT(r, 1);
+    TV_CHECK(r.overflowed && run.stencil == TV_STENCIL_SEALED && run.term_depth == 1.0f);
+    n -= 3;
+    items[n++] = (item)F(3.0f, 3);
+    pvs_pixel_state open = {0};
+    r = run_layer(&open, items, n);
+    CHECK_NONE(r);
+    TV_CHECK(open.stencil == TV_STENCIL_TRIMMED && open.carry_count == 2);
+    TV_CHECK(open.carry[1].kind == TV_ENTRY_TRIM && open.carry[1].id == TV_ID_PRIOR && open.carry[1].depth == 3.0f);
+}
+
+/* A lost back merges two intervals: [F1, B1.5] (valid, umbra 1.8) and
+ * [F2, B3.5] (not valid) become one valid interval hiding to 3.5. The
+ * output is the same (F2 is the terminator in the full sequence); only the
+ * far fillers decide where it seals. */
+static void test_overflow_back_list(void)
+{
+    item items[TV_K_BACK + 8];
+    uint32_t n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)T(1.2f, 1);
+    items[n++] = (item)U(1.8f, 1);
+    items[n++] = (item)F(2.0f, 2);
+    for (uint32_t i = 0; i + 1 < TV_K_BACK; i++)
+        items[n++] = (item)B(100.0f + (float)i);
+    items[n++] = (item)B(3.5f);
+    items[n++] = (item)B(1.5f); /* no room: lost */
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed);
+    CHECK_OUT(r, 1, 2, BACK_ID); /* the first filler is a lone back: the terminator */
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* Prior faces: the pixel's nearest faces from earlier layers (P2's centre
+ * depths) enter the sequence when it becomes trimmed, never output. Here an
+ * occluder whose front (at 1) was drawn in an earlier layer gets its back,
+ * trim and umbra only now (an object spanning layers): it hides the small
+ * eroded object 2 and lets F3 through, where without it the occluder's back
+ * would have been taken for the terminator and F3 lost. */
+static void test_prior_faces(void)
+{
+    pvs_pixel_state s = {0};
+    layer_result r = RUN_PRIOR(s, 1.0f, 2.0f, T(1.5f, 1), B(2.0f), U(3.0f, 1), F(2.5f, 2), T(2.6f, 2), B(2.7f),
+                               U(2.8f, 2), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, 3);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+    pvs_pixel_state t = {0};
+    r = RUN(t, T(1.5f, 1), B(2.0f), U(3.0f, 1), F(2.5f, 2), T(2.6f, 2), B(2.7f), U(2.8f, 2), F(4.0f, 3), B(4.5f));
+    CHECK_OUT(r, BACK_ID); /* what the resolve did without prior faces */
+    /* an untrimmed solid in front of a newly trimmed one seals at once */
+    pvs_pixel_state u = {0};
+    r = RUN_PRIOR(u, 1.0f, 1.5f, F(5.0f, 5), T(5.2f, 2), B(5.5f), U(9.0f, 2), F(10.0f, 6));
+    CHECK_NONE(r);
+    TV_CHECK(u.stencil == TV_STENCIL_SEALED);
+    /* a single-sided surface seen from behind (a back alone) too */
+    pvs_pixel_state v = {0};
+    r = RUN_PRIOR(v, 0.0f, 1.0f, F(5.0f, 5), T(5.2f, 2), B(5.5f));
+    CHECK_NONE(r);
+    TV_CHECK(v.stencil == TV_STENCIL_SEALED);
+    /* a prior face that this layer stored is not added twice: a second back
+     * at the validated [1, 1.5]'s depth would have terminated the pixel */
+    pvs_pixel_state x = {0};
+    r = RUN_PRIOR(x, 1.0f, 1.5f, F(1.0f, 1), T(1.2f, 1), B(1.5f), F(2.0f, 2), T(2.2f, 2), B(2.5f), U(4.0f, 2),
+                  F(5.0f, 3));
+    CHECK_OUT(r, 1, 2);
+    TV_CHECK(x.stencil == TV_STENCIL_TRIMMED && x.carry_count == 1);
+    /* prior faces only join when the pixel becomes trimmed */
+    pvs_pixel_state w = {0};
+    RUN(w, F(0.5f, 1), T(0.6f, 3), B(0.7f), U(0.8f, 3), F(0.9f, 9));
+    r = RUN_PRIOR(w, 0.0f, 0.85f, F(5.0f, 5), B(5.5f));
+    CHECK_OUT(r, 9); /* the carried 9 terminates; a prior back at 0.85 would have hidden it */
+}
+
+/* A trailing run longer than the carry: its fronts are output at once. */
+static void test_carry_overflow(void)
+{
+    item items[TV_K_CARRY + 3];
+    uint32_t n = 0;
+    items[n++] = (item)T(0.5f, 1);
+    for (uint32_t i = 0; i < TV_K_CARRY + 2; i++)
+        items[n++] = (item)F(1.0f + (float)i, 200 + i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(r.overflowed && r.count == TV_K_CARRY + 2);
+    TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW && s.carry_count == 0);
+}
+
+
+int main(void)
+{
+    TV_TEST_RUN(test_overflow_keeps_every_front);
+    TV_TEST_RUN(test_overflow_behind_terminator);
+    TV_TEST_RUN(test_overflow_umbra_list);
+    TV_TEST_RUN(test_overflow_trim_list);
+    TV_TEST_RUN(test_overflow_back_list);
+    TV_TEST_RUN(test_prior_faces);
+    TV_TEST_RUN(test_carry_overflow);
+    return tv_test_finish();
+}
