@@ -39,6 +39,9 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
         p->desc.latency_factor = 1.0;
     p->triangle_count = scene->triangle_count;
     p->latency_est_s = desc->latency_model == TV_LATENCY_FIXED ? desc->latency_s : 0.05;
+    /* tr's limit whatever the method: a cheap method sizes the same cells */
+    if (!(p->desc.viewcell.max_apex_offset_m > 0.0f))
+        p->desc.viewcell.max_apex_offset_m = pvs_max_apex_offset(desc->method.tr.near_m);
     pred_predictor_init(&p->predictor, &desc->predictor);
     if (!pred_error_tracker_init(&p->tracker, &(pred_error_tracker_desc){0})) {
         snprintf(err, err_size, "prediction error tracker: out of memory");
@@ -113,6 +116,9 @@ static bool request(tv_pvs_pipeline* p, double t, double frame_s, bool first, ch
         if (req.vc.frusta == frusta || latency_for(p, req.vc.frusta) == latency)
             break;
     }
+    /* the whole scene needs no compute: in use from its arrival on */
+    if (req.vc.whole_scene)
+        req.vc.t_begin = t;
     tv_pvs_slot* s = &p->pending;
     s->pred_t0 = t;
     s->pred_dt = (vd.latency_s + vd.window_s + 2.0 * frame_s) / (TV_PVS_PREDICTION_STEPS - 1);
@@ -144,7 +150,9 @@ static bool adopt(tv_pvs_pipeline* p, tv_pvs_result* r, char* err, size_t err_si
     slot_release(&p->current);
     p->current = next;
     p->adopted++;
-    p->frustum_ms[p->timed++ % TV_PVS_TIMED] = r->compute_ms / (r->vc.frusta > 1 ? r->vc.frusta : 1);
+    p->whole_scene_pvs += r->vc.whole_scene;
+    if (!r->vc.whole_scene) /* listing every triangle says nothing about the compute time */
+        p->frustum_ms[p->timed++ % TV_PVS_TIMED] = r->compute_ms / (r->vc.frusta > 1 ? r->vc.frusta : 1);
     return true;
 }
 
@@ -170,6 +178,11 @@ int tv_pvs_pipeline_step(tv_pvs_pipeline* p, double t, double frame_s, bool may_
     if (may_request && !tv_worker_busy(p->worker) && !request(p, t, frame_s, false, err, err_size))
         return -1;
     return polled;
+}
+
+bool tv_pvs_pipeline_whole_scene(const tv_pvs_pipeline* p, double t)
+{
+    return p->current.r.vc.whole_scene || t > p->current.r.vc.t_end;
 }
 
 void tv_pvs_pipeline_predicted(const tv_pvs_pipeline* p, double t, pred_pose* out)
