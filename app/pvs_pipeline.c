@@ -12,6 +12,20 @@ static bool compute_pvs(void* user, const void* request, uint32_t** ids, uint32_
     return pvs_method_compute(user, request, ids, count, stats, err, err_size);
 }
 
+/* no_pvs: an empty PVS, no method call. */
+static bool compute_empty(void* user, const void* request, uint32_t** ids, uint32_t* count, void* stats, char* err,
+                          size_t err_size)
+{
+    (void)user;
+    (void)request;
+    (void)stats; /* zeroed by the worker */
+    *count = 0;
+    *ids = malloc(sizeof **ids);
+    if (!*ids)
+        snprintf(err, err_size, "out of memory");
+    return *ids != NULL;
+}
+
 static void slot_release(tv_pvs_slot* s)
 {
     tv_pvs_result_free(&s->r);
@@ -33,6 +47,7 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
                            const scn_scene* scene, const rnd_gpu_scene* gpu, char* err, size_t err_size)
 {
     assert(p && desc && rnd && scene && gpu);
+    assert(!desc->no_pvs || desc->latency_model == TV_LATENCY_FIXED);
     memset(p, 0, sizeof *p);
     p->desc = *desc;
     if (!(p->desc.latency_factor > 0.0))
@@ -47,12 +62,12 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
         snprintf(err, err_size, "prediction error tracker: out of memory");
         return false;
     }
-    p->method = pvs_method_create(&desc->method, rnd, scene, gpu, err, err_size);
-    tv_worker_desc wd = {.compute = compute_pvs, .user = p->method, .stats_size = sizeof(pvs_method_stats),
+    p->method = desc->no_pvs ? NULL : pvs_method_create(&desc->method, rnd, scene, gpu, err, err_size);
+    tv_worker_desc wd = {.compute = desc->no_pvs ? compute_empty : compute_pvs, .user = p->method, .stats_size = sizeof(pvs_method_stats),
                          .extra_size = sizeof(pvs_request), .model = desc->latency_model,
                          .fixed_latency_s = desc->latency_s, .factor = p->desc.latency_factor};
     tv_worker_describe(&wd, p->latency_name, sizeof p->latency_name);
-    if (p->method)
+    if (p->method || desc->no_pvs)
         p->worker = tv_worker_start(&wd, err, err_size);
     if (!p->worker) {
         tv_pvs_pipeline_stop(p);

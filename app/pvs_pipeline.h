@@ -48,6 +48,10 @@ typedef struct tv_pvs_pipeline_desc {
     tv_latency_model latency_model;
     double latency_s;            /* fixed model: request -> availability */
     double latency_factor;       /* measured model: factor on the compute time; 0: 1 */
+    /* Coverage runs: no method is created and every PVS is empty. Under the
+     * fixed model the timeline, the sizing and the coverage test are the same
+     * as with any method (precondition: latency_model is TV_LATENCY_FIXED). */
+    bool no_pvs;
 } tv_pvs_pipeline_desc;
 
 typedef struct tv_pvs_pipeline {

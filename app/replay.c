@@ -184,7 +184,7 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
             covered &= pred_viewcell_contains(vc, eyes[e].p, eyes[e].q, d->viewcell.display_fov_h_deg,
                                               st->eye_fov_v, &why[e]);
         tv_replay_log_coverage(st->log, covered, whole, whole ? 1.0 : pvs_fraction(st), vc->delta, vc->fov_pvs_deg);
-        bool render = k % (uint64_t)d->every == 0;
+        bool render = !d->coverage_only && k % (uint64_t)d->every == 0;
         if (render || !covered) {
             hmd_eye_poses(&st->sim, &predicted_head, predicted_eyes);
             for (int e = 0; e < 2; e++)
@@ -205,7 +205,7 @@ static bool setup(replay_state* st, char* err, size_t err_size)
     st->eye_fov_v = rnd_fov_y_from_x(d->viewcell.display_fov_h_deg, (float)d->width / (float)d->height);
     tv_pvs_pipeline_desc pd = {.method = d->method, .predictor = d->predictor, .viewcell = d->viewcell,
                                .latency_model = d->latency_model, .latency_s = d->latency_s,
-                               .latency_factor = d->latency_factor};
+                               .latency_factor = d->latency_factor, .no_pvs = d->coverage_only};
     if (!tv_pvs_pipeline_start(&st->pipe, &pd, st->s.ctx, &st->s.scene, st->s.gpu, err, err_size))
         return false;
     st->target = rnd_target_create(st->s.ctx, d->width, d->height, err, err_size);

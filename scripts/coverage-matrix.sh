@@ -3,9 +3,9 @@
 # of every bundled path and of every trace of ../shared/traces (placed in builtin:interior as
 # docs/results.md, "Recorded human motion", places them) with each predictor, at the fixed 50 ms
 # latency model. Coverage is geometry: the sizing, the latency model and the test do not depend
-# on the PVS method or the image sizes (docs/replay.md), so the runs use the cheap frompoint
-# method and render one frame (at 32x18: the aspect, hence the eye's vertical FOV, of the
-# default 640x360). Writes OUT/<path>-<predictor>/summary.json and OUT/coverage.md.
+# on the PVS (docs/replay.md), so the runs use `--coverage-only` (no PVS computed, nothing
+# rendered; the default 640x360 aspect sets the eye's vertical FOV). Writes
+# OUT/<path>-<predictor>/summary.json and OUT/coverage.md.
 #
 #   scripts/coverage-matrix.sh [OUT]        (default out/coverage-matrix)
 #
@@ -40,7 +40,7 @@ for p in $PATHS; do
     for pr in $PREDICTORS; do
         dir=$OUT/$name-$pr
         echo "coverage-matrix: $name $pr" >&2
-        "$B/trimvr" replay --path "$p" --predictor "$pr" --method frompoint --every 1000000 --res 32x18 \
+        "$B/trimvr" replay --path "$p" --predictor "$pr" --coverage-only \
             --frames "$FRAMES" --no-plots --no-progress --out "$dir" >"$dir.log" 2>&1 ||
             echo "coverage-matrix: $dir failed (see $dir.log)" >&2
         j=$dir/summary.json
