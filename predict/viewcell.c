@@ -27,6 +27,7 @@ static pred_viewcell_desc _resolve(const pred_viewcell_desc* in)
     d.fixed_fov_pvs_deg = _fdef(d.fixed_fov_pvs_deg, 90.0f);
     d.quantile = _fdef(d.quantile, 0.99f);
     d.min_delta_m = _fdef(d.min_delta_m, 0.02f);
+    d.max_delta_m = _fdef(d.max_delta_m, 5.0f);
     d.min_fov_pvs_deg = _fdef(d.min_fov_pvs_deg, fmaxf(d.display_fov_h_deg, d.display_fov_v_deg));
     d.max_fov_pvs_deg = _fdef(d.max_fov_pvs_deg, 150.0f);
     d.warmup_records = d.warmup_records ? d.warmup_records : 50;
@@ -127,7 +128,8 @@ void pred_viewcell_from_poses(const pred_viewcell_desc* desc_in, const pred_pose
             }
         }
         delta = fmax(need + pos_err_m / cos(alpha) + k_delta_margin_m, d.min_delta_m);
-        out->whole_scene = d.max_apex_offset_m > 0.0f && delta / tan(alpha) > d.max_apex_offset_m;
+        out->whole_scene =
+            delta > d.max_delta_m || (d.max_apex_offset_m > 0.0f && delta / tan(alpha) > d.max_apex_offset_m);
     }
     double z = delta / tan(alpha), apex[3];
     for (int k = 0; k < 3; k++)

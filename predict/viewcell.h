@@ -50,10 +50,14 @@ typedef struct pred_viewcell_desc {
     float fixed_fov_pvs_deg; /* FIXED: 90 */
     float quantile;          /* ADAPTIVE: 0.99 of the tracked errors */
     float min_delta_m;       /* ADAPTIVE: 0.02 m */
-    /* ADAPTIVE: the farthest apex (z = delta / tan alpha behind v0) a PVS can
-     * be computed for (pvs_max_apex_offset: the PVS depth buffer's limit);
-     * a sizing that needs more gives the whole scene as the PVS instead of a
-     * smaller cell (whole_scene): a slow PVS costs size, never holes. 0: no limit */
+    /* ADAPTIVE: the largest cell a PVS is computed for. A sizing that needs a
+     * larger delta, or an apex (z = delta / tan alpha behind v0) farther than
+     * max_apex_offset_m, gives the whole scene as the PVS instead of a smaller
+     * cell (whole_scene): a slow PVS costs size, never holes.
+     * max_delta_m 0: 5 m (the largest delta at which tr was measured
+     * conservative, docs/prediction.md); max_apex_offset_m 0: no limit (the
+     * replay sets pvs_max_apex_offset, the PVS depth buffer's limit). */
+    float max_delta_m;
     float max_apex_offset_m;
     float min_fov_pvs_deg;   /* ADAPTIVE: the larger display angle */
     float max_fov_pvs_deg;   /* ADAPTIVE: 150 */

@@ -92,7 +92,8 @@ plot '$data' using 5:xtic(2) title 'mean', '' using 6 title 'p5'
 set yrange [*:*]
 set title 'PVS size (% of the scene, 100 = whole scene)'
 plot '$data' using 7:xtic(2) title 'PVS %'
-set title 'viewcell of computed PVSs'
+set title 'viewcell of computed PVSs (log scale)'
+set logscale y
 set style data linespoints
 plot '$data' using 0:8:xtic(2) pt 7 title 'Δ cm', '' using 0:9 pt 5 title 'PVS FOV °'
 unset multiplot

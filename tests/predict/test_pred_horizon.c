@@ -251,7 +251,10 @@ static void test_huge_horizon_is_whole_scene(void)
     pred_viewcell_miss why = PRED_VC_MISS_AXIAL;
     TV_CHECK(pred_viewcell_contains(&vc, (double[3]){500, 1.7, -80}, (double[4]){0, 0.6, 0, 0.8}, 60, 60, &why) &&
              why == PRED_VC_COVERED);
+    /* the default 5 m delta limit alone also says whole scene; without either it is that 43 m cell */
     desc.max_apex_offset_m = 0.0f;
+    TV_CHECK(pred_viewcell_size(&desc, &p, NULL, 1.0, &vc) && vc.whole_scene);
+    desc.max_delta_m = 100.0f;
     TV_CHECK(pred_viewcell_size(&desc, &p, NULL, 1.0, &vc));
     TV_CHECK(!vc.whole_scene && vc.delta > 43.0f);
 }
