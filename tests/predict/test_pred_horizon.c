@@ -48,22 +48,29 @@ static bool _turn_covered(const pred_viewcell* vc, double t_newest, double acc_d
     return all;
 }
 
+/* A head held still for 5 s (samples at 1 kHz up to t = 5 s) whose tracker
+ * has seen only calm motion: 1 mm and 0.5 deg errors at every horizon. */
+static void _calm_head(pred_predictor* p, pred_error_tracker* tr)
+{
+    pred_predictor_init(p, &(pred_predictor_desc){.kind = PRED_KIND_CV});
+    for (int i = 0; i <= 5000; i++) {
+        pred_pose s = {.t = 0.001 * i, .p = {0, 1.7, 0}, .q = {0, 0, 0, 1}};
+        pred_predictor_update(p, &s);
+    }
+    TV_CHECK(pred_error_tracker_init(tr, &(pred_error_tracker_desc){0}));
+    for (int i = 0; i < 400; i++)
+        for (int h = 0; h < tr->horizon_count; h++)
+            pred_error_tracker_record(tr, h, 0.001, 0.5);
+}
+
 /* The tracker has seen only calm motion (0.5 deg errors); the physical bound
  * still covers a turn at the bound's acceleration starting right after the
  * request, and a turn 50 % harder than that leaves the cell. */
 static void test_fast_turn_after_calm(void)
 {
     pred_predictor p;
-    pred_predictor_init(&p, &(pred_predictor_desc){.kind = PRED_KIND_CV});
-    for (int i = 0; i <= 5000; i++) {
-        pred_pose s = {.t = 0.001 * i, .p = {0, 1.7, 0}, .q = {0, 0, 0, 1}};
-        pred_predictor_update(&p, &s);
-    }
     pred_error_tracker tr;
-    TV_CHECK(pred_error_tracker_init(&tr, &(pred_error_tracker_desc){0}));
-    for (int i = 0; i < 400; i++)
-        for (int h = 0; h < tr.horizon_count; h++)
-            pred_error_tracker_record(&tr, h, 0.001, 0.5);
+    _calm_head(&p, &tr);
     pred_viewcell_desc desc = {.policy = PRED_POLICY_ADAPTIVE, .latency_s = 0.05, .window_s = 0.061};
     pred_viewcell vc;
     TV_CHECK(pred_viewcell_size(&desc, &p, &tr, 5.0, &vc));
@@ -192,16 +199,8 @@ static void _burst(double h, double* x, double* yaw)
 static void test_burst_after_calm_at_long_latency(void)
 {
     pred_predictor p;
-    pred_predictor_init(&p, &(pred_predictor_desc){.kind = PRED_KIND_CV});
-    for (int i = 0; i <= 5000; i++) {
-        pred_pose s = {.t = 0.001 * i, .p = {0, 1.7, 0}, .q = {0, 0, 0, 1}};
-        pred_predictor_update(&p, &s);
-    }
     pred_error_tracker tr;
-    TV_CHECK(pred_error_tracker_init(&tr, &(pred_error_tracker_desc){0}));
-    for (int i = 0; i < 400; i++)
-        for (int h = 0; h < tr.horizon_count; h++)
-            pred_error_tracker_record(&tr, h, 0.001, 0.5);
+    _calm_head(&p, &tr);
     pred_viewcell_desc desc = {.policy = PRED_POLICY_ADAPTIVE, .latency_s = 0.6, .window_s = 0.6111,
                                .max_apex_offset_m = 31.7f};
     pred_viewcell vc;
