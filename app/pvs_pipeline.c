@@ -63,8 +63,9 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
         return false;
     }
     p->method = desc->no_pvs ? NULL : pvs_method_create(&desc->method, rnd, scene, gpu, err, err_size);
-    tv_worker_desc wd = {.compute = desc->no_pvs ? compute_empty : compute_pvs, .user = p->method, .stats_size = sizeof(pvs_method_stats),
-                         .extra_size = sizeof(pvs_request), .model = desc->latency_model,
+    tv_worker_desc wd = {.compute = desc->no_pvs ? compute_empty : compute_pvs, .user = p->method,
+                         .stats_size = sizeof(pvs_method_stats), .extra_size = sizeof(pvs_request),
+                         .model = desc->latency_model,
                          .fixed_latency_s = desc->latency_s, .factor = p->desc.latency_factor};
     tv_worker_describe(&wd, p->latency_name, sizeof p->latency_name);
     if (p->method || desc->no_pvs)
@@ -165,7 +166,6 @@ static bool adopt(tv_pvs_pipeline* p, tv_pvs_result* r, char* err, size_t err_si
     slot_release(&p->current);
     p->current = next;
     p->adopted++;
-    p->whole_scene_pvs += r->vc.whole_scene;
     if (!r->vc.whole_scene) /* listing every triangle says nothing about the compute time */
         p->frustum_ms[p->timed++ % TV_PVS_TIMED] = r->compute_ms / (r->vc.frusta > 1 ? r->vc.frusta : 1);
     return true;

@@ -68,7 +68,6 @@ typedef struct tv_pvs_pipeline {
     double frustum_ms[TV_PVS_TIMED]; /* measured model: the last PVSs' compute times per frustum */
     uint32_t timed;       /* PVSs timed into frustum_ms so far */
     uint32_t adopted;     /* PVSs taken into use so far */
-    uint32_t whole_scene_pvs; /* of those, whole-scene ones (pred_viewcell.whole_scene) */
     char latency_name[64]; /* "fixed 50.0 ms" / "measured x1.00" */
 } tv_pvs_pipeline;
 

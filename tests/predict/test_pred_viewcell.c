@@ -258,7 +258,8 @@ static void test_sizing_covers_predicted_eyes(void)
     pred_viewcell_desc limited = desc;
     limited.max_apex_offset_m = 0.99f * sized.z;
     pred_viewcell_from_poses(&limited, heads, 9, 4, 1.0, rot_err, &vc);
-    TV_CHECK(vc.whole_scene && pred_viewcell_contains(&vc, (double[3]){1e3, 0, 0}, (double[4]){0, 0, 0, 1}, 60, 60, NULL));
+    TV_CHECK(vc.whole_scene &&
+             pred_viewcell_contains(&vc, (double[3]){1e3, 0, 0}, (double[4]){0, 0, 0, 1}, 60, 60, NULL));
     limited = desc;
     limited.max_delta_m = 0.99f * sized.delta;
     pred_viewcell_from_poses(&limited, heads, 9, 4, 1.0, rot_err, &vc);
