@@ -19,6 +19,8 @@
 
 float pvs_max_apex_offset(float near_m)
 {
+    if (!(near_m > 0.0f))
+        near_m = PVS_DEFAULT_NEAR;
     return sqrtf(PVS_MAX_DEPTH_STEP_M * near_m * 16777216.0f); /* step = 2^-24 z^2 / near */
 }
 

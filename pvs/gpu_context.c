@@ -18,7 +18,6 @@
 /* The default resolution in one tile: larger images are tiled, and the
  * per-pixel memory stays what 512 x 512 needs (k-buffers 128 MiB at k = 16). */
 #define PVS_DEFAULT_TILE_PIXELS (512u * 512u)
-#define PVS_DEFAULT_NEAR 0.01f
 #define PVS_DEFAULT_MAX_PROXIES 1024u
 /* The paper's N. On a CPU device (lavapipe) the cooperative pass only
  * costs: a workgroup resolves one pixel where a SIMD batch of the per-thread

@@ -55,6 +55,8 @@ typedef struct pvs_desc {
  * 9.5 mm; nothing at all at z = 1e5 m, where every depth rounds to the far
  * plane's). With the default near plane the limit is z <= 31.7 m. */
 #define PVS_MAX_DEPTH_STEP_M 0.006f
+#define PVS_DEFAULT_NEAR 0.01f /* pvs_desc.near_m's default */
+/* near_m 0: PVS_DEFAULT_NEAR. */
 float pvs_max_apex_offset(float near_m);
 
 /* One layer's share of a computation (docs/pvs-gpu-passes.md, "Cost per
