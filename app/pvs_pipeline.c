@@ -5,11 +5,49 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The worker's compute: one PVS method call on the request it was handed. */
+uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, tv_mover_proxy* out)
+{
+    for (uint32_t i = 0; i < scene->mover_count; i++) {
+        scn_mover_bounds(scene, i, t0, t1, out[i].box_min, out[i].box_max);
+        out[i].first_id = scene->movers[i].first_triangle;
+        out[i].id_count = scene->movers[i].triangle_count;
+    }
+    return scene->mover_count;
+}
+
+/* MOVERS, conservative until the PVS takes proxies (pvs_compute_dynamic):
+ * every mover's triangles join the PVS whatever its box, so
+ * dynamic_pvs_fraction is 1. The static computation's own ids of moving
+ * triangles (a PVS that still sorts them into its octree at their t = 0
+ * pose) are dropped first so no id is listed twice. */
+static bool add_movers(const tv_pvs_pipeline* p, uint32_t** ids, uint32_t* count, char* err, size_t err_size)
+{
+    uint32_t first_dynamic = p->triangle_count - p->scene->dynamic_triangle_count, kept = 0;
+    for (uint32_t i = 0; i < *count; i++)
+        if ((*ids)[i] < first_dynamic)
+            (*ids)[kept++] = (*ids)[i];
+    uint32_t* grown = realloc(*ids, ((size_t)kept + p->scene->dynamic_triangle_count + 1) * sizeof **ids);
+    if (!grown) {
+        snprintf(err, err_size, "out of memory adding the movers to the PVS");
+        return false;
+    }
+    *ids = grown;
+    for (uint32_t m = 0; m < p->scene->mover_count; m++)
+        for (uint32_t k = 0; k < p->proxies[m].id_count; k++)
+            grown[kept++] = p->proxies[m].first_id + k;
+    *count = kept;
+    return true;
+}
+
+/* The worker's compute: one PVS method call on the request it was handed,
+ * then the movers. The proxies are the request's: the pipeline sends the
+ * next one only once the worker is idle. */
 static bool compute_pvs(void* user, const void* request, uint32_t** ids, uint32_t* count, void* stats, char* err,
                         size_t err_size)
 {
-    return pvs_method_compute(user, request, ids, count, stats, err, err_size);
+    tv_pvs_pipeline* p = user;
+    return pvs_method_compute(p->method, request, ids, count, stats, err, err_size) &&
+           (!p->scene->mover_count || add_movers(p, ids, count, err, err_size));
 }
 
 static void slot_release(tv_pvs_slot* s)
@@ -38,6 +76,7 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
     if (!(p->desc.latency_factor > 0.0))
         p->desc.latency_factor = 1.0;
     p->triangle_count = scene->triangle_count;
+    p->scene = scene;
     p->latency_est_s = desc->latency_model == TV_LATENCY_FIXED ? desc->latency_s : 0.05;
     pred_predictor_init(&p->predictor, &desc->predictor);
     if (!pred_error_tracker_init(&p->tracker, &(pred_error_tracker_desc){0})) {
@@ -45,11 +84,14 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
         return false;
     }
     p->method = pvs_method_create(&desc->method, rnd, scene, gpu, err, err_size);
-    tv_worker_desc wd = {.compute = compute_pvs, .user = p->method, .stats_size = sizeof(pvs_method_stats),
+    p->proxies = calloc(scene->mover_count ? scene->mover_count : 1, sizeof *p->proxies);
+    if (!p->proxies)
+        snprintf(err, err_size, "out of memory");
+    tv_worker_desc wd = {.compute = compute_pvs, .user = p, .stats_size = sizeof(pvs_method_stats),
                          .extra_size = sizeof(pvs_request), .model = desc->latency_model,
                          .fixed_latency_s = desc->latency_s, .factor = p->desc.latency_factor};
     tv_worker_describe(&wd, p->latency_name, sizeof p->latency_name);
-    if (p->method)
+    if (p->method && p->proxies)
         p->worker = tv_worker_start(&wd, err, err_size);
     if (!p->worker) {
         tv_pvs_pipeline_stop(p);
@@ -125,6 +167,7 @@ static bool request(tv_pvs_pipeline* p, double t, double frame_s, bool first, ch
         req.motion[k] = b.p[k] - a.p[k];
     req.current = p->last;
     req.eye_fov_h_deg = p->desc.viewcell.display_fov_h_deg;
+    tv_pvs_pipeline_proxies(p->scene, req.vc.t_begin, req.vc.t_end, p->proxies);
     tv_worker_submit(p->worker, &req.vc, &req, t);
     return true;
 }
@@ -139,8 +182,12 @@ static bool adopt(tv_pvs_pipeline* p, tv_pvs_result* r, char* err, size_t err_si
         snprintf(err, err_size, "out of memory");
         return false;
     }
-    for (uint32_t i = 0; i < r->count; i++)
+    uint32_t first_dynamic = p->triangle_count - p->scene->dynamic_triangle_count;
+    next.dynamic_count = 0;
+    for (uint32_t i = 0; i < r->count; i++) {
         next.mask[r->ids[i]] = 1;
+        next.dynamic_count += r->ids[i] >= first_dynamic;
+    }
     slot_release(&p->current);
     p->current = next;
     p->adopted++;
@@ -183,5 +230,6 @@ void tv_pvs_pipeline_stop(tv_pvs_pipeline* p)
     pvs_method_destroy(p->method);
     slot_release(&p->current);
     pred_error_tracker_free(&p->tracker);
+    free(p->proxies);
     memset(p, 0, sizeof *p);
 }

@@ -31,9 +31,17 @@
  * whose slowest sizes the next request. */
 #define TV_PVS_TIMED 8
 
+/* A mover's box over a PVS's use window and its triangle ids (the fields of
+ * pvs_proxy, the PVS's dynamic-object input). */
+typedef struct tv_mover_proxy {
+    float box_min[3], box_max[3];
+    uint32_t first_id, id_count;
+} tv_mover_proxy;
+
 typedef struct tv_pvs_slot {
     tv_pvs_result r;
     uint8_t* mask; /* r.ids as a triangle_count byte mask */
+    uint32_t dynamic_count; /* ids of moving triangles in r.ids */
     pred_pose predicted[TV_PVS_PREDICTION_STEPS];
     double pred_t0, pred_dt;
 } tv_pvs_slot;
@@ -51,6 +59,8 @@ typedef struct tv_pvs_pipeline_desc {
 typedef struct tv_pvs_pipeline {
     tv_pvs_pipeline_desc desc;
     uint32_t triangle_count;
+    const scn_scene* scene; /* its movers' tracks size the proxies */
+    tv_mover_proxy* proxies; /* one per mover, for the request in flight (the worker reads them) */
     pred_predictor predictor;
     pred_error_tracker tracker;
     pvs_method* method;
@@ -70,6 +80,11 @@ typedef struct tv_pvs_pipeline {
  * leaves nothing allocated. */
 bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc, rnd_context* rnd,
                            const scn_scene* scene, const rnd_gpu_scene* gpu, char* err, size_t err_size);
+
+/* Fills one proxy per mover of the pipeline's scene: the box it sweeps over
+ * the use window [t0, t1] (scn_mover_bounds) and its triangle ids. Returns
+ * the count (the scene's mover_count). */
+uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, tv_mover_proxy* out);
 
 /* One head sensor sample, newer than the previous one. */
 void tv_pvs_pipeline_observe(tv_pvs_pipeline* p, const pred_pose* sample);

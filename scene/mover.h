@@ -3,7 +3,8 @@
  * A mover owns a contiguous vertex range and a contiguous triangle range of
  * its scene; the movers' triangles are the scene's last
  * `dynamic_triangle_count` triangles, so every id below
- * triangle_count - dynamic_triangle_count is static geometry. A mover keeps
+ * triangle_count - dynamic_triangle_count is static geometry; movers follow
+ * each other in the order of their ranges, vertices too. A mover keeps
  * its rest geometry in its own (local) frame; its world transform at time t
  * is parent * T(t) * R(t) * S(t) (glTF node semantics), with each of T, R, S
  * read from a keyframe track (LINEAR: lerp, slerp for R; STEP: the last key
