@@ -53,6 +53,7 @@ typedef struct scn_scene {
     uint32_t triangle_count;
     uint32_t* indices;      /* 3 per triangle, into the vertex arrays */
     uint32_t* tri_material; /* material index per triangle */
+    uint32_t dynamic_triangle_count; /* the last N triangles move (scn_mover); not in the PVS octree */
 
     uint32_t material_count;
     scn_material* materials;
@@ -65,7 +66,6 @@ typedef struct scn_scene {
      * (repeated index or zero world-space area); not part of triangle_count. */
     uint32_t degenerate_dropped;
 
-    uint32_t dynamic_triangle_count; /* the last N triangles move (scn_mover); not in the PVS octree */
     uint32_t mover_count;
     scn_mover* movers; /* mover.h: each owns a contiguous range of those triangles and their vertices */
 } scn_scene;
