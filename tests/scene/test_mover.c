@@ -1,9 +1,11 @@
-/* test_mover.c - keyframe interpolation, posing, swept bounds and the
- * built-in movers, with answers known in closed form. */
+/* test_mover.c - keyframe interpolation, posing, swept bounds, the
+ * built-in movers and glTF animations, with answers known in closed form. */
+#define _DEFAULT_SOURCE /* mkdtemp */
 #include "mover.h"
 #include "procedural.h"
 #include "procgen.h"
 #include "scene.h"
+#include "scene_test_dir.h"
 #include "test.h"
 
 #include <float.h>
@@ -270,13 +272,119 @@ static void test_builtin_movers(void)
     }
 }
 
+static char dir[256];
+
+/* A glTF of one triangle (0,0,0) (1,0,0) (0,1,0) on five nodes: "static"
+ * (a morph-weights channel only: stays static), "slide" (translation LINEAR
+ * 0 -> (2,0,0) -> (2,2,0) at t = 0, 1, 2), "spin" under "arm" (0,5,0):
+ * scale 2, rotation STEP identity -> 90 deg about z -> identity, and "cubic"
+ * (CUBICSPLINE translation, values (0,0,0) (0,0,3) (0,0,6)). `times` are the
+ * three key times. */
+static void write_animated(char* path, size_t size, const char* name, const float times[3])
+{
+    float bin[60] = {0, 0, 0, 1, 0, 0, 0, 1, 0}; /* 240 bytes */
+    memcpy(bin + 9, times, 3 * sizeof(float));
+    const float slide[9] = {0, 0, 0, 2, 0, 0, 2, 2, 0};
+    float h = sqrtf(0.5f);
+    const float spin[12] = {0, 0, 0, 1, 0, 0, h, h, 0, 0, 0, 1};
+    memcpy(bin + 12, slide, sizeof slide);
+    memcpy(bin + 21, spin, sizeof spin);
+    for (int k = 0; k < 3; k++) /* in-tangent, value, out-tangent per key */
+        bin[33 + 9 * k + 3 + 2] = 3.0f * k, bin[33 + 9 * k] = 7.0f, bin[33 + 9 * k + 6] = -7.0f;
+    char bin_path[300];
+    snprintf(bin_path, sizeof bin_path, "%s/%s.bin", dir, name);
+    FILE* f = fopen(bin_path, "wb");
+    TV_CHECK(f && fwrite(bin, sizeof bin, 1, f) == 1);
+    if (f)
+        fclose(f);
+    snprintf(path, size, "%s/%s.gltf", dir, name);
+    f = fopen(path, "w");
+    TV_CHECK(f != NULL);
+    if (!f)
+        return;
+    fprintf(f,
+            "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0,1,2,4]}],"
+            "\"nodes\":[{\"name\":\"static\",\"mesh\":0,\"translation\":[10,0,0]},"
+            "{\"name\":\"slide\",\"mesh\":0,\"translation\":[0,0,-5]},"
+            "{\"name\":\"arm\",\"translation\":[0,5,0],\"children\":[3]},"
+            "{\"name\":\"spin\",\"mesh\":0,\"scale\":[2,2,2]},{\"name\":\"cubic\",\"mesh\":0}],"
+            "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
+            "\"buffers\":[{\"uri\":\"%s.bin\",\"byteLength\":240}],"
+            "\"bufferViews\":[{\"buffer\":0,\"byteOffset\":0,\"byteLength\":36},"
+            "{\"buffer\":0,\"byteOffset\":36,\"byteLength\":12},{\"buffer\":0,\"byteOffset\":48,\"byteLength\":36},"
+            "{\"buffer\":0,\"byteOffset\":84,\"byteLength\":48},{\"buffer\":0,\"byteOffset\":132,\"byteLength\":108}],"
+            "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
+            "\"min\":[0,0,0],\"max\":[1,1,0]},"
+            "{\"bufferView\":1,\"componentType\":5126,\"count\":3,\"type\":\"SCALAR\",\"min\":[0],\"max\":[2]},"
+            "{\"bufferView\":2,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"},"
+            "{\"bufferView\":3,\"componentType\":5126,\"count\":3,\"type\":\"VEC4\"},"
+            "{\"bufferView\":4,\"componentType\":5126,\"count\":9,\"type\":\"VEC3\"}],"
+            "\"animations\":[{\"channels\":[{\"sampler\":0,\"target\":{\"node\":1,\"path\":\"translation\"}},"
+            "{\"sampler\":2,\"target\":{\"node\":4,\"path\":\"translation\"}},"
+            "{\"sampler\":3,\"target\":{\"node\":0,\"path\":\"weights\"}}],"
+            "\"samplers\":[{\"input\":1,\"output\":2},{\"input\":1,\"output\":3,\"interpolation\":\"STEP\"},"
+            "{\"input\":1,\"output\":4,\"interpolation\":\"CUBICSPLINE\"},{\"input\":1,\"output\":1}]},"
+            "{\"channels\":[{\"sampler\":0,\"target\":{\"node\":3,\"path\":\"rotation\"}}],"
+            "\"samplers\":[{\"input\":1,\"output\":3,\"interpolation\":\"STEP\"}]}]}",
+            name);
+    fclose(f);
+}
+
+/* Position of corner c of the triangle of mover `name`. */
+static const float* corner(const scn_scene* s, const char* name, int c)
+{
+    for (uint32_t i = 0; i < s->mover_count; i++)
+        if (strcmp(s->movers[i].name, name) == 0)
+            return s->positions + 3 * s->indices[3 * s->movers[i].first_triangle + c];
+    return NULL;
+}
+
+static bool near3(const float* p, float x, float y, float z)
+{
+    return p && fabsf(p[0] - x) < 1e-5f && fabsf(p[1] - y) < 1e-5f && fabsf(p[2] - z) < 1e-5f;
+}
+
+static void test_gltf_animation(void)
+{
+    char path[300], err[512];
+    const float times[3] = {0, 1, 2};
+    write_animated(path, sizeof path, "animated", times);
+    scn_scene s;
+    TV_CHECK(scn_load(path, &s, err, sizeof err));
+    if (s.triangle_count == 0) {
+        printf("  %s\n", err);
+        return;
+    }
+    TV_CHECK(s.mover_count == 3 && s.triangle_count == 4 && s.dynamic_triangle_count == 3);
+    /* the static triangle first, at (10, 0, 0) */
+    TV_CHECK(near3(s.positions + 3 * s.indices[0], 10, 0, 0));
+    scn_scene_pose(&s, 0.5);
+    TV_CHECK(near3(corner(&s, "slide", 0), 1, 0, 0)); /* the channel replaces the node's translation */
+    TV_CHECK(near3(corner(&s, "spin", 1), 2, 5, 0));  /* STEP: still the first key */
+    TV_CHECK(near3(corner(&s, "cubic", 0), 0, 0, 1.5f));
+    scn_scene_pose(&s, 1.5);
+    TV_CHECK(near3(corner(&s, "slide", 0), 2, 1, 0));
+    TV_CHECK(near3(corner(&s, "spin", 1), 0, 7, 0)); /* (2,0,0) turned 90 deg about z, under the arm */
+    scn_scene_pose(&s, 2.5); /* loops with the last key time, 2 s */
+    TV_CHECK(near3(corner(&s, "slide", 0), 1, 0, 0));
+    scn_scene_free(&s);
+
+    const float bad[3] = {0, 1, 1};
+    write_animated(path, sizeof path, "bad_times", bad);
+    TV_CHECK(!scn_load(path, &s, err, sizeof err) && strstr(err, "bad_times.gltf: ") && strstr(err, "increasing"));
+}
+
 int main(void)
 {
+    if (!scene_test_dir_create(dir, sizeof dir, "tv_scene_mover"))
+        return 1;
+    TV_TEST_RUN(test_gltf_animation);
     TV_TEST_RUN(test_layout);
     TV_TEST_RUN(test_linear_step_loop);
     TV_TEST_RUN(test_rotation_scale_normals);
     TV_TEST_RUN(test_bounds);
     TV_TEST_RUN(test_bad_tracks);
     TV_TEST_RUN(test_builtin_movers);
+    scene_test_dir_remove(dir);
     return tv_test_finish();
 }
