@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, tv_mover_proxy* out)
+uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, pvs_proxy* out)
 {
     for (uint32_t i = 0; i < scene->mover_count; i++) {
         scn_mover_bounds(scene, i, t0, t1, out[i].box_min, out[i].box_max);
@@ -15,39 +15,11 @@ uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, t
     return scene->mover_count;
 }
 
-/* MOVERS, conservative until the PVS takes proxies (pvs_compute_dynamic):
- * every mover's triangles join the PVS whatever its box, so
- * dynamic_pvs_fraction is 1. The static computation's own ids of moving
- * triangles (a PVS that still sorts them into its octree at their t = 0
- * pose) are dropped first so no id is listed twice. */
-static bool add_movers(const tv_pvs_pipeline* p, uint32_t** ids, uint32_t* count, char* err, size_t err_size)
-{
-    uint32_t first_dynamic = p->triangle_count - p->scene->dynamic_triangle_count, kept = 0;
-    for (uint32_t i = 0; i < *count; i++)
-        if ((*ids)[i] < first_dynamic)
-            (*ids)[kept++] = (*ids)[i];
-    uint32_t* grown = realloc(*ids, ((size_t)kept + p->scene->dynamic_triangle_count + 1) * sizeof **ids);
-    if (!grown) {
-        snprintf(err, err_size, "out of memory adding the movers to the PVS");
-        return false;
-    }
-    *ids = grown;
-    for (uint32_t m = 0; m < p->scene->mover_count; m++)
-        for (uint32_t k = 0; k < p->proxies[m].id_count; k++)
-            grown[kept++] = p->proxies[m].first_id + k;
-    *count = kept;
-    return true;
-}
-
-/* The worker's compute: one PVS method call on the request it was handed,
- * then the movers. The proxies are the request's: the pipeline sends the
- * next one only once the worker is idle. */
+/* The worker's compute: one PVS method call on the request it was handed. */
 static bool compute_pvs(void* user, const void* request, uint32_t** ids, uint32_t* count, void* stats, char* err,
                         size_t err_size)
 {
-    tv_pvs_pipeline* p = user;
-    return pvs_method_compute(p->method, request, ids, count, stats, err, err_size) &&
-           (!p->scene->mover_count || add_movers(p, ids, count, err, err_size));
+    return pvs_method_compute(user, request, ids, count, stats, err, err_size);
 }
 
 static void slot_release(tv_pvs_slot* s)
@@ -87,7 +59,7 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
     p->proxies = calloc(scene->mover_count ? scene->mover_count : 1, sizeof *p->proxies);
     if (!p->proxies)
         snprintf(err, err_size, "out of memory");
-    tv_worker_desc wd = {.compute = compute_pvs, .user = p, .stats_size = sizeof(pvs_method_stats),
+    tv_worker_desc wd = {.compute = compute_pvs, .user = p->method, .stats_size = sizeof(pvs_method_stats),
                          .extra_size = sizeof(pvs_request), .model = desc->latency_model,
                          .fixed_latency_s = desc->latency_s, .factor = p->desc.latency_factor};
     tv_worker_describe(&wd, p->latency_name, sizeof p->latency_name);
@@ -167,7 +139,9 @@ static bool request(tv_pvs_pipeline* p, double t, double frame_s, bool first, ch
         req.motion[k] = b.p[k] - a.p[k];
     req.current = p->last;
     req.eye_fov_h_deg = p->desc.viewcell.display_fov_h_deg;
-    tv_pvs_pipeline_proxies(p->scene, req.vc.t_begin, req.vc.t_end, p->proxies);
+    /* the proxies stay the pipeline's: the next request waits until the worker is idle */
+    req.proxies = p->proxies;
+    req.proxy_count = tv_pvs_pipeline_proxies(p->scene, req.vc.t_begin, req.vc.t_end, p->proxies);
     tv_worker_submit(p->worker, &req.vc, &req, t);
     return true;
 }

@@ -31,13 +31,6 @@
  * whose slowest sizes the next request. */
 #define TV_PVS_TIMED 8
 
-/* A mover's box over a PVS's use window and its triangle ids (the fields of
- * pvs_proxy, the PVS's dynamic-object input). */
-typedef struct tv_mover_proxy {
-    float box_min[3], box_max[3];
-    uint32_t first_id, id_count;
-} tv_mover_proxy;
-
 typedef struct tv_pvs_slot {
     tv_pvs_result r;
     uint8_t* mask; /* r.ids as a triangle_count byte mask */
@@ -60,7 +53,7 @@ typedef struct tv_pvs_pipeline {
     tv_pvs_pipeline_desc desc;
     uint32_t triangle_count;
     const scn_scene* scene; /* its movers' tracks size the proxies */
-    tv_mover_proxy* proxies; /* one per mover, for the request in flight (the worker reads them) */
+    pvs_proxy* proxies; /* one per mover, for the request in flight (the worker reads them) */
     pred_predictor predictor;
     pred_error_tracker tracker;
     pvs_method* method;
@@ -84,7 +77,7 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
 /* Fills one proxy per mover of the pipeline's scene: the box it sweeps over
  * the use window [t0, t1] (scn_mover_bounds) and its triangle ids. Returns
  * the count (the scene's mover_count). */
-uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, tv_mover_proxy* out);
+uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, pvs_proxy* out);
 
 /* One head sensor sample, newer than the previous one. */
 void tv_pvs_pipeline_observe(tv_pvs_pipeline* p, const pred_pose* sample);

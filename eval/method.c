@@ -157,6 +157,15 @@ bool pvs_method_compute(pvs_method* m, const pvs_request* in, uint32_t** ids, ui
     uint32_t n = 0;
     if (!m->ops->compute(m, &req, &list, &n, &st, err, err_size))
         return false;
+    if (m->kind != PVS_METHOD_TR && req.proxy_count) { /* only tr sorts movers in: the rest take them all */
+        for (uint32_t i = 0; list && i < n; i++)
+            m->mask[list[i]] = 1;
+        for (uint32_t i = 0; i < req.proxy_count; i++)
+            memset(m->mask + req.proxies[i].first_id, 1, req.proxies[i].id_count);
+        free(list);
+        list = NULL;
+        n = 0;
+    }
     if (!list) {
         for (uint32_t t = 0; t < m->triangle_count; t++)
             n += m->mask[t];
