@@ -161,6 +161,11 @@ const rnd_gpu_scene* tv_app_scene_at(tv_app_scene* s, double t, char* err, size_
     return s->posed;
 }
 
+const rnd_gpu_scene* tv_app_scene_pose(void* user, double t, char* err, size_t err_size)
+{
+    return tv_app_scene_at(user, t, err, err_size);
+}
+
 bool tv_app_scene_close(tv_app_scene* s)
 {
     if (s->gpu)

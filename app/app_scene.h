@@ -61,6 +61,9 @@ rnd_camera tv_camera_at_pose(const pred_pose* pose, float fov_y_deg, float near_
  * filled) on failure. */
 const rnd_gpu_scene* tv_app_scene_at(tv_app_scene* s, double t, char* err, size_t err_size);
 
+/* tv_app_scene_at as pvs_eval_desc.pose (user: the tv_app_scene). */
+const rnd_gpu_scene* tv_app_scene_pose(void* user, double t, char* err, size_t err_size);
+
 /* Releases everything. Returns false (after printing why) when the validation
  * layer reported warnings or errors during the run. */
 bool tv_app_scene_close(tv_app_scene* s);

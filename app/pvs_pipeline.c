@@ -5,16 +5,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, pvs_proxy* out)
-{
-    for (uint32_t i = 0; i < scene->mover_count; i++) {
-        scn_mover_bounds(scene, i, t0, t1, out[i].box_min, out[i].box_max);
-        out[i].first_id = scene->movers[i].first_triangle;
-        out[i].id_count = scene->movers[i].triangle_count;
-    }
-    return scene->mover_count;
-}
-
 /* The worker's compute: one PVS method call on the request it was handed. */
 static bool compute_pvs(void* user, const void* request, uint32_t** ids, uint32_t* count, void* stats, char* err,
                         size_t err_size)
@@ -141,7 +131,7 @@ static bool request(tv_pvs_pipeline* p, double t, double frame_s, bool first, ch
     req.eye_fov_h_deg = p->desc.viewcell.display_fov_h_deg;
     /* the proxies stay the pipeline's: the next request waits until the worker is idle */
     req.proxies = p->proxies;
-    req.proxy_count = tv_pvs_pipeline_proxies(p->scene, req.vc.t_begin, req.vc.t_end, p->proxies);
+    req.proxy_count = pvs_method_proxies(p->scene, req.vc.t_begin, req.vc.t_end, p->proxies);
     tv_worker_submit(p->worker, &req.vc, &req, t);
     return true;
 }

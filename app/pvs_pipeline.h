@@ -74,11 +74,6 @@ typedef struct tv_pvs_pipeline {
 bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc, rnd_context* rnd,
                            const scn_scene* scene, const rnd_gpu_scene* gpu, char* err, size_t err_size);
 
-/* Fills one proxy per mover of the pipeline's scene: the box it sweeps over
- * the use window [t0, t1] (scn_mover_bounds) and its triangle ids. Returns
- * the count (the scene's mover_count). */
-uint32_t tv_pvs_pipeline_proxies(const scn_scene* scene, double t0, double t1, pvs_proxy* out);
-
 /* One head sensor sample, newer than the previous one. */
 void tv_pvs_pipeline_observe(tv_pvs_pipeline* p, const pred_pose* sample);
 

@@ -137,6 +137,16 @@ static bool _check_request(const pvs_method* m, const pvs_request* req, char* er
     return true;
 }
 
+uint32_t pvs_method_proxies(const scn_scene* scene, double t0, double t1, pvs_proxy* out)
+{
+    for (uint32_t i = 0; i < scene->mover_count; i++) {
+        scn_mover_bounds(scene, i, t0, t1, out[i].box_min, out[i].box_max);
+        out[i].first_id = scene->movers[i].first_triangle;
+        out[i].id_count = scene->movers[i].triangle_count;
+    }
+    return scene->mover_count;
+}
+
 bool pvs_method_compute(pvs_method* m, const pvs_request* in, uint32_t** ids, uint32_t* count,
                         pvs_method_stats* stats, char* err, size_t err_size)
 {

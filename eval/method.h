@@ -80,6 +80,11 @@ typedef struct pvs_method_stats {
 
 typedef struct pvs_method pvs_method;
 
+/* Fills one proxy per mover of `scene` (mover_count entries): the box it
+ * sweeps over [t0, t1] (scn_mover_bounds) and its triangle ids. Returns the
+ * count. */
+uint32_t pvs_method_proxies(const scn_scene* scene, double t0, double t1, pvs_proxy* out);
+
 /* Creates a method for `scene` (uploaded as `gpu` on `rnd`). NULL with a
  * one-line reason on failure (for q3vis: a missing or malformed .pvs.json
  * names the file). */
