@@ -142,10 +142,36 @@ bool tv_app_scene_open_out(const char* spec, const char* out_dir, tv_app_scene* 
     return open_scene(spec, NULL, out_dir, out);
 }
 
+const rnd_gpu_scene* tv_app_scene_at(tv_app_scene* s, double t, char* err, size_t err_size)
+{
+    const scn_scene* sc = &s->scene;
+    if (!sc->mover_count)
+        return s->gpu;
+    if (s->posed && s->posed_t == t)
+        return s->posed;
+    scn_scene_pose(&s->scene, t);
+    if (!s->posed && !(s->posed = rnd_scene_create(s->ctx, sc, err, err_size)))
+        return NULL;
+    const scn_mover* last = &sc->movers[sc->mover_count - 1]; /* movers' vertices: one range, in order */
+    uint32_t first = sc->movers[0].first_vertex;
+    if (!rnd_scene_update_vertices(s->ctx, s->posed, sc, first, last->first_vertex + last->vertex_count - first, err,
+                                   err_size))
+        return NULL;
+    s->posed_t = t;
+    return s->posed;
+}
+
+const rnd_gpu_scene* tv_app_scene_pose(void* user, double t, char* err, size_t err_size)
+{
+    return tv_app_scene_at(user, t, err, err_size);
+}
+
 bool tv_app_scene_close(tv_app_scene* s)
 {
     if (s->gpu)
         rnd_scene_destroy(s->ctx, s->gpu);
+    if (s->posed)
+        rnd_scene_destroy(s->ctx, s->posed);
     uint32_t messages = s->ctx ? rnd_validation_message_count(s->ctx) : 0;
     rnd_destroy(s->ctx);
     scn_scene_free(&s->scene);

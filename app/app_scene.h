@@ -15,7 +15,9 @@
 typedef struct tv_app_scene {
     scn_scene scene;
     rnd_context* ctx;
-    rnd_gpu_scene* gpu;
+    rnd_gpu_scene* gpu; /* the scene as loaded (movers at t = 0): what a PVS computation reads */
+    rnd_gpu_scene* posed; /* scenes with movers: a second upload, posed per frame for display renders */
+    double posed_t;
     double load_ms;   /* scn_load wall time */
     double upload_ms; /* rnd_scene_create wall time */
 } tv_app_scene;
@@ -51,6 +53,16 @@ bool tv_app_scene_open_out(const char* spec, const char* out_dir, tv_app_scene* 
 /* The camera of an eye or head pose (float copies of position and
  * orientation) with the given vertical FOV and clip planes. */
 rnd_camera tv_camera_at_pose(const pred_pose* pose, float fov_y_deg, float near_m, float far_m);
+
+/* The upload to draw a frame of time t with: `gpu` for a static scene;
+ * else the scene is posed at t (scn_scene_pose) and its movers' vertices
+ * uploaded to `posed` (created on the first call) unless it holds t already.
+ * The PVS worker keeps `gpu`, so posing never races its draws. NULL (err
+ * filled) on failure. */
+const rnd_gpu_scene* tv_app_scene_at(tv_app_scene* s, double t, char* err, size_t err_size);
+
+/* tv_app_scene_at as pvs_eval_desc.pose (user: the tv_app_scene). */
+const rnd_gpu_scene* tv_app_scene_pose(void* user, double t, char* err, size_t err_size);
 
 /* Releases everything. Returns false (after printing why) when the validation
  * layer reported warnings or errors during the run. */

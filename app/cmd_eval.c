@@ -141,7 +141,8 @@ static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, c
     uint8_t* mask = calloc(tris ? tris : 1, 1);
     uint8_t* gt = calloc(tris ? tris : 1, 1);
     tv_eval_images worst = {0};
-    pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1]};
+    pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1],
+                        .pose = tv_app_scene_pose, .pose_user = s};
     if (!m || !mask || !gt) {
         tv_log(TV_LOG_ERROR, "%s", m ? "out of memory" : err);
         status = 1;

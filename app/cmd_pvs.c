@@ -86,10 +86,16 @@ int tv_cmd_pvs(int argc, char** argv)
     for (int i = 0; i < 3; i++)
         req.current.p[i] = pos[i];
     req.current.q[3] = 1.0;
+    /* movers over the viewcell's window (tv_viewcell_make: [0, TV_VIEWCELL_WINDOW_S]) */
+    pvs_proxy* proxies = calloc(s.scene.mover_count ? s.scene.mover_count : 1, sizeof *proxies);
+    req.proxies = proxies;
+    req.proxy_count = proxies ? pvs_method_proxies(&s.scene, vc.t_begin, vc.t_end, proxies) : 0;
     uint32_t* ids = NULL;
     uint32_t count = 0;
     pvs_method_stats st = {0};
-    if (!m || !pvs_method_compute(m, &req, &ids, &count, &st, err, sizeof err)) {
+    if (!proxies)
+        snprintf(err, sizeof err, "out of memory");
+    if (!m || !proxies || !pvs_method_compute(m, &req, &ids, &count, &st, err, sizeof err)) {
         tv_log(TV_LOG_ERROR, "%s", err);
         status = 1;
     } else {
@@ -113,6 +119,7 @@ int tv_cmd_pvs(int argc, char** argv)
         }
     }
     free(ids);
+    free(proxies);
     pvs_method_destroy(m);
     if (!tv_app_scene_close(&s))
         status = 1;

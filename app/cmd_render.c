@@ -118,9 +118,15 @@ static bool render_frame(render_run* r, int64_t f, const pred_pose* head)
         rnd_stereo_cameras(base.position, base.orientation, o->ipd, &base, &cams[0], &cams[1]);
         eyes = 2;
     }
+    char err[512] = "";
+    const rnd_gpu_scene* gpu = tv_app_scene_at(&r->s, head->t, err, sizeof err); /* movers at the frame's time */
+    if (!gpu) {
+        tv_log(TV_LOG_ERROR, "frame %lld: %s", (long long)f, err);
+        return false;
+    }
     for (int e = 0; e < eyes; e++) {
         rnd_draw_stats st;
-        if (!rnd_draw(r->s.ctx, r->target, r->s.gpu, &cams[e], NULL, 0, &st) ||
+        if (!rnd_draw(r->s.ctx, r->target, gpu, &cams[e], NULL, 0, &st) ||
             !rnd_target_read_color(r->s.ctx, r->target, r->rgba)) {
             tv_log(TV_LOG_ERROR, "drawing frame %lld failed", (long long)f);
             return false;

@@ -160,7 +160,7 @@ static void copy_to_mirror(demo* m, int half)
 
 /* Figure 1 seen from behind and above the head (horizontal heading, world
  * up, so looking up or down does not tip the overview). */
-static bool render_overview(demo* m, const pred_pose* head)
+static bool render_overview(demo* m, const pred_pose* head, const rnd_gpu_scene* gpu)
 {
     const tv_pvs_result* cur = &m->pvs.current.r;
     double f[3], up[3] = {0.0, 1.0, 0.0};
@@ -170,7 +170,7 @@ static bool render_overview(demo* m, const pred_pose* head)
     rnd_camera cam;
     tv_overview_camera(&m->s.scene, head->p, flat, up, &cam);
     cam.fov_y_deg = m->fov_v_deg;
-    if (!tv_overview_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->seen, m->pvs.current.mask, m->s.scene.triangle_count))
+    if (!tv_overview_render(&m->eye, m->s.ctx, gpu, &cam, m->seen, m->pvs.current.mask, m->s.scene.triangle_count))
         return false;
     tv_canvas c = {m->eye.rgba, (int)m->d->width, (int)m->d->height};
     tv_draw_viewcell(&c, &cam, &cur->vc, viewcell_colour(m->inside));
@@ -189,13 +189,19 @@ static bool render_eyes(demo* m, const pred_pose* head)
     pred_eye_poses(head, d->ipd_m, eyes);
     const tv_pvs_result* cur = &m->pvs.current.r;
     uint32_t n = m->s.scene.triangle_count;
+    char err[512] = "";
+    const rnd_gpu_scene* gpu = tv_app_scene_at(&m->s, head->t, err, sizeof err); /* movers at the head's time */
+    if (!gpu) {
+        tv_log(TV_LOG_ERROR, "%s", err);
+        return false;
+    }
     if (m->overview)
         memset(m->seen, 0, n ? n : 1);
     m->inside = true;
     for (int e = 0; e < 2; e++) {
         rnd_camera cam = tv_camera_at_pose(&eyes[e], m->fov_v_deg, m->d->near_m, m->d->far_m);
-        if (!tv_eye_render(&m->eye, m->s.ctx, m->s.gpu, &cam, m->mode, cur->ids, cur->count, m->pvs.current.mask, n, check,
-                           &m->check[e]))
+        if (!tv_eye_render(&m->eye, m->s.ctx, gpu, &cam, m->mode, cur->ids, cur->count, m->pvs.current.mask, n,
+                           n - m->s.scene.dynamic_triangle_count, check, &m->check[e]))
             return false;
         bool in = pred_viewcell_contains(&cur->vc, eyes[e].p, eyes[e].q, d->fov_h_deg, m->fov_v_deg, NULL);
         m->inside = m->inside && in;
@@ -208,7 +214,7 @@ static bool render_eyes(demo* m, const pred_pose* head)
             tv_draw_viewcell(&eye, &cam, &cur->vc, viewcell_colour(in));
         copy_to_mirror(m, e);
     }
-    if (m->overview && !render_overview(m, head))
+    if (m->overview && !render_overview(m, head, gpu))
         return false;
     if (check) {
         m->have_check = true;
@@ -245,6 +251,8 @@ static void draw_overlays(demo* m, double t)
             .check_frame = m->check_frame,
             .psnr_db = m->check[0].psnr_db < m->check[1].psnr_db ? m->check[0].psnr_db : m->check[1].psnr_db,
             .fn_pixels = m->check[0].fn_pixels + m->check[1].fn_pixels,
+            .movers = m->s.scene.mover_count,
+            .dynamic_fn_pixels = m->check[0].dynamic_fn_pixels + m->check[1].dynamic_fn_pixels,
             .check_every = m->d->check_every,
             .misses = m->misses,
             .frames = m->frame + 1,

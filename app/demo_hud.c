@@ -21,10 +21,14 @@ static const uint8_t k_panel[3] = {0, 0, 0};
 void tv_hud_draw(const tv_canvas* c, const tv_hud_info* in, int scale)
 {
     char check[160];
+    char movers[64] = "";
+    if (in->movers)
+        snprintf(movers, sizeof movers, " (%llu on %u movers)", (unsigned long long)in->dynamic_fn_pixels,
+                 in->movers);
     if (in->have_check)
-        snprintf(check, sizeof check, "check @%llu (every %d): PSNR %s%.1f dB, FN %llu px",
+        snprintf(check, sizeof check, "check @%llu (every %d): PSNR %s%.1f dB, FN %llu px%s",
                  (unsigned long long)in->check_frame, in->check_every, isinf(in->psnr_db) ? "inf " : "",
-                 isinf(in->psnr_db) ? 0.0 : in->psnr_db, (unsigned long long)in->fn_pixels);
+                 isinf(in->psnr_db) ? 0.0 : in->psnr_db, (unsigned long long)in->fn_pixels, movers);
     else
         snprintf(check, sizeof check, "check: none yet (every %d frames)", in->check_every);
     char frusta[48] = "";

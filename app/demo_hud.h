@@ -27,6 +27,8 @@ typedef struct tv_hud_info {
     uint64_t check_frame;
     double psnr_db;         /* of the worse eye */
     uint64_t fn_pixels;     /* both eyes */
+    uint32_t movers;        /* the scene's moving objects (0: static scene) */
+    uint64_t dynamic_fn_pixels; /* of fn_pixels, those on movers */
     int check_every;
     uint64_t misses, frames;
     double speed;

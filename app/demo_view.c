@@ -40,7 +40,7 @@ void tv_eye_renderer_free(tv_eye_renderer* r, rnd_context* ctx)
 
 bool tv_eye_render(tv_eye_renderer* r, rnd_context* ctx, const rnd_gpu_scene* gpu, const rnd_camera* cam,
                    tv_eye_mode mode, const uint32_t* pvs_ids, uint32_t pvs_count, const uint8_t* pvs_mask,
-                   uint32_t triangle_count, bool check, tv_eye_check* out)
+                   uint32_t triangle_count, uint32_t first_dynamic, bool check, tv_eye_check* out)
 {
     size_t pixels = (size_t)r->width * r->height;
     bool full = mode != TV_EYE_PVS || check;
@@ -55,6 +55,7 @@ bool tv_eye_render(tv_eye_renderer* r, rnd_context* ctx, const rnd_gpu_scene* gp
     if (check) {
         out->psnr_db = rnd_psnr_rgb8(r->rgba_full, r->rgba, pixels, 4);
         out->fn_pixels = rnd_count_fn_pixels(r->ids, pixels, pvs_mask, triangle_count);
+        out->dynamic_fn_pixels = rnd_count_fn_pixels_from(r->ids, pixels, pvs_mask, triangle_count, first_dynamic);
     }
     if (mode != TV_EYE_PVS)
         memcpy(r->rgba, r->rgba_full, pixels * 4);

@@ -30,6 +30,7 @@ typedef struct tv_eye_renderer {
 typedef struct tv_eye_check {
     double psnr_db;     /* INFINITY when identical */
     uint64_t fn_pixels; /* pixels whose visible triangle is missing from the PVS */
+    uint64_t dynamic_fn_pixels; /* those on moving triangles (ids from first_dynamic on) */
 } tv_eye_check;
 
 bool tv_eye_renderer_init(tv_eye_renderer* r, rnd_context* ctx, uint32_t width, uint32_t height, char* err,
@@ -42,7 +43,7 @@ void tv_eye_renderer_free(tv_eye_renderer* r, rnd_context* ctx);
  * whatever the mode. False (logged by render/) on a Vulkan failure. */
 bool tv_eye_render(tv_eye_renderer* r, rnd_context* ctx, const rnd_gpu_scene* gpu, const rnd_camera* cam,
                    tv_eye_mode mode, const uint32_t* pvs_ids, uint32_t pvs_count, const uint8_t* pvs_mask,
-                   uint32_t triangle_count, bool check, tv_eye_check* out);
+                   uint32_t triangle_count, uint32_t first_dynamic, bool check, tv_eye_check* out);
 
 /* Marks the triangles of r's last full render (its id buffer, filled by a
  * check or the FN view) in `seen` (triangle_count bytes). */

@@ -53,6 +53,7 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
     if (!(p->desc.latency_factor > 0.0))
         p->desc.latency_factor = 1.0;
     p->triangle_count = scene->triangle_count;
+    p->scene = scene;
     p->latency_est_s = desc->latency_model == TV_LATENCY_FIXED ? desc->latency_s : 0.05;
     /* tr's limit whatever the method: a cheap method sizes the same cells */
     if (!(p->desc.viewcell.max_apex_offset_m > 0.0f))
@@ -63,12 +64,15 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
         return false;
     }
     p->method = desc->no_pvs ? NULL : pvs_method_create(&desc->method, rnd, scene, gpu, err, err_size);
+    p->proxies = calloc(scene->mover_count ? scene->mover_count : 1, sizeof *p->proxies);
+    if (!p->proxies)
+        snprintf(err, err_size, "out of memory");
     tv_worker_desc wd = {.compute = desc->no_pvs ? compute_empty : compute_pvs, .user = p->method,
                          .stats_size = sizeof(pvs_method_stats), .extra_size = sizeof(pvs_request),
                          .model = desc->latency_model,
                          .fixed_latency_s = desc->latency_s, .factor = p->desc.latency_factor};
     tv_worker_describe(&wd, p->latency_name, sizeof p->latency_name);
-    if (p->method || desc->no_pvs)
+    if ((p->method || desc->no_pvs) && p->proxies)
         p->worker = tv_worker_start(&wd, err, err_size);
     if (!p->worker) {
         tv_pvs_pipeline_stop(p);
@@ -147,6 +151,9 @@ static bool request(tv_pvs_pipeline* p, double t, double frame_s, bool first, ch
         req.motion[k] = b.p[k] - a.p[k];
     req.current = p->last;
     req.eye_fov_h_deg = p->desc.viewcell.display_fov_h_deg;
+    /* the proxies stay the pipeline's: the next request waits until the worker is idle */
+    req.proxies = p->proxies;
+    req.proxy_count = pvs_method_proxies(p->scene, req.vc.t_begin, req.vc.t_end, p->proxies);
     tv_worker_submit(p->worker, &req.vc, &req, t);
     return true;
 }
@@ -161,8 +168,12 @@ static bool adopt(tv_pvs_pipeline* p, tv_pvs_result* r, char* err, size_t err_si
         snprintf(err, err_size, "out of memory");
         return false;
     }
-    for (uint32_t i = 0; i < r->count; i++)
+    uint32_t first_dynamic = p->triangle_count - p->scene->dynamic_triangle_count;
+    next.dynamic_count = 0;
+    for (uint32_t i = 0; i < r->count; i++) {
         next.mask[r->ids[i]] = 1;
+        next.dynamic_count += r->ids[i] >= first_dynamic;
+    }
     slot_release(&p->current);
     p->current = next;
     p->adopted++;
@@ -211,5 +222,6 @@ void tv_pvs_pipeline_stop(tv_pvs_pipeline* p)
     pvs_method_destroy(p->method);
     slot_release(&p->current);
     pred_error_tracker_free(&p->tracker);
+    free(p->proxies);
     memset(p, 0, sizeof *p);
 }

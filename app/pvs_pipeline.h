@@ -36,6 +36,7 @@
 typedef struct tv_pvs_slot {
     tv_pvs_result r;
     uint8_t* mask; /* r.ids as a triangle_count byte mask */
+    uint32_t dynamic_count; /* ids of moving triangles in r.ids */
     pred_pose predicted[TV_PVS_PREDICTION_STEPS];
     double pred_t0, pred_dt;
 } tv_pvs_slot;
@@ -57,6 +58,8 @@ typedef struct tv_pvs_pipeline_desc {
 typedef struct tv_pvs_pipeline {
     tv_pvs_pipeline_desc desc;
     uint32_t triangle_count;
+    const scn_scene* scene; /* its movers' tracks size the proxies */
+    pvs_proxy* proxies; /* one per mover, for the request in flight (the worker reads them) */
     pred_predictor predictor;
     pred_error_tracker tracker;
     pvs_method* method;

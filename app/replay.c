@@ -76,14 +76,19 @@ static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_s
                     size_t err_size)
 {
     const tv_pvs_slot* cur = &st->pipe.current;
+    const scn_scene* scene = &st->s.scene;
     size_t pixels = (size_t)st->d->width * st->d->height;
     rnd_draw_stats full_st = {0}, pvs_st = {0};
     if (render) {
+        /* movers at the frame's submit time, the clock the PVS windows are measured on */
+        const rnd_gpu_scene* gpu = tv_app_scene_at(&st->s, t_submit, err, err_size);
+        if (!gpu)
+            return false;
         rnd_camera cam = tv_camera_at_pose(eye, st->eye_fov_v, st->d->near_m, st->d->far_m);
-        if (!rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, NULL, 0, &full_st) ||
+        if (!rnd_draw(st->s.ctx, st->target, gpu, &cam, NULL, 0, &full_st) ||
             !rnd_target_read_color(st->s.ctx, st->target, st->rgba_full) ||
             !rnd_target_read_ids(st->s.ctx, st->target, st->ids_full) ||
-            !rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, whole ? NULL : cur->r.ids, whole ? 0 : cur->r.count,
+            !rnd_draw(st->s.ctx, st->target, gpu, &cam, whole ? NULL : cur->r.ids, whole ? 0 : cur->r.count,
                       &pvs_st) ||
             !rnd_target_read_color(st->s.ctx, st->target, st->rgba_pvs)) {
             snprintf(err, err_size, "rendering frame %llu failed (Vulkan error logged)", (unsigned long long)frame);
@@ -106,8 +111,15 @@ static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_s
         .pvs_age_ms = (t_submit - cur->r.t_request) * 1e3,
         .inside = why == PRED_VC_COVERED,
         .miss_reason = miss_token(why),
-        .pvs_tris = whole ? st->s.scene.triangle_count : cur->r.count,
+        .pvs_tris = whole ? scene->triangle_count : cur->r.count,
         .pvs_fraction = whole ? 1.0 : pvs_fraction(st),
+        .static_pvs_fraction = whole ? 1.0
+                                     : (double)(cur->r.count - cur->dynamic_count) /
+                                           (scene->triangle_count - scene->dynamic_triangle_count),
+        .dynamic_pvs_fraction = whole ? 1.0
+                                : scene->dynamic_triangle_count
+                                    ? (double)cur->dynamic_count / scene->dynamic_triangle_count
+                                    : 0.0,
         .pvs_compute_ms = cur->r.compute_ms,
         .rendered = render,
         .pvs_frusta = cur->r.vc.frusta,
@@ -115,7 +127,11 @@ static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_s
     };
     if (render) {
         row.psnr_db = rnd_psnr_rgb8(st->rgba_full, st->rgba_pvs, pixels, 4);
-        row.fn_pixels = whole ? 0 : rnd_count_fn_pixels(st->ids_full, pixels, cur->mask, st->s.scene.triangle_count);
+        row.fn_pixels = whole ? 0 : rnd_count_fn_pixels(st->ids_full, pixels, cur->mask, scene->triangle_count);
+        row.dynamic_fn_pixels =
+            whole ? 0
+                  : rnd_count_fn_pixels_from(st->ids_full, pixels, cur->mask, scene->triangle_count,
+                                             scene->triangle_count - scene->dynamic_triangle_count);
         row.diff_pixels = rnd_count_diff_pixels(st->rgba_full, st->rgba_pvs, pixels, 4, 0);
         /* GPU time where the device has timestamps: on a single-queue device
          * the wall clock would include waiting behind the PVS worker's work */
@@ -287,6 +303,7 @@ int tv_replay_run(const tv_replay_desc* d)
             .policy = d->viewcell.policy == PRED_POLICY_FIXED ? "fixed" : "adaptive",
             .latency_model = st.pipe.latency_name,
             .scene_tris = st.s.scene.triangle_count,
+            .dynamic_tris = st.s.scene.dynamic_triangle_count,
             .width = d->width,
             .height = d->height,
             .eye_fov_deg = d->viewcell.display_fov_h_deg,

@@ -30,7 +30,8 @@ static bool series_push(series* s, double x)
 struct tv_replay_log {
     FILE* csv;
     char csv_name[4200];
-    series psnr, ssim, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
+    series psnr, ssim, fn, pvs_fraction, static_fraction, dynamic_fraction, dynamic_fn, delta, fov, render_full,
+        render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
     uint64_t rows, misses, identical, coverage_frames, omni_pvs, clamped_pvs, whole_scene_frames, whole_scene_pvs;
     double sum_mse;
 };
@@ -39,7 +40,8 @@ static const char* k_header =
     "frame,t,eye,px,py,pz,qx,qy,qz,qw,pose_age_ms,"
     "pred_px,pred_py,pred_pz,pred_qx,pred_qy,pred_qz,pred_qw,pred_err_pos_m,pred_err_rot_deg,pred_horizon_ms,"
     "delta_m,fov_pvs_deg,pvs_id,pvs_age_ms,inside_viewcell,miss_reason,pvs_tris,pvs_fraction,"
-    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,ssim,rendered,pvs_frusta,whole_scene\n";
+    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,ssim,rendered,pvs_frusta,whole_scene,"
+    "dynamic_pvs_fraction,dynamic_fn_pixels\n";
 
 tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size)
 {
@@ -65,23 +67,24 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
     const pred_pose* p = &r->pose;
     const pred_pose* q = &r->predicted;
     /* psnr_db,fn_pixels,diff_pixels, the two render times and ssim: empty on a coverage-only row */
-    char image[160] = ",,", render[96] = ",,";
+    char image[160] = ",,", render[96] = ",,", dynamic_fn[32] = "";
     if (r->rendered) {
         snprintf(image, sizeof image, "%.3f,%llu,%llu", isinf(r->psnr_db) ? INFINITY : r->psnr_db,
                  (unsigned long long)r->fn_pixels, (unsigned long long)r->diff_pixels);
         snprintf(render, sizeof render, "%.3f,%.3f,%.6f", r->render_pvs_ms, r->render_full_ms, r->ssim);
+        snprintf(dynamic_fn, sizeof dynamic_fn, "%llu", (unsigned long long)r->dynamic_fn_pixels);
     }
     int n = fprintf(log->csv,
                     "%llu,%.6f,%s,%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.3f,"
                     "%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.6f,%.4f,%.3f,"
                     "%.4f,%.3f,%u,%.3f,%d,%s,%u,%.6f,"
-                    "%s,%.3f,%s,%d,%d,%d\n",
+                    "%s,%.3f,%s,%d,%d,%d,%.6f,%s\n",
                     (unsigned long long)r->frame, r->t, r->eye == 0 ? "left" : "right", p->p[0], p->p[1], p->p[2],
                     p->q[0], p->q[1], p->q[2], p->q[3], r->pose_age_ms, q->p[0], q->p[1], q->p[2], q->q[0], q->q[1],
                     q->q[2], q->q[3], r->pred_err_pos_m, r->pred_err_rot_deg, r->pred_horizon_ms, r->delta_m,
                     r->fov_pvs_deg, r->pvs_id, r->pvs_age_ms, r->inside ? 1 : 0, r->miss_reason, r->pvs_tris,
                     r->pvs_fraction, image, r->pvs_compute_ms, render, r->rendered ? 1 : 0, r->pvs_frusta,
-                    r->whole_scene ? 1 : 0);
+                    r->whole_scene ? 1 : 0, r->dynamic_pvs_fraction, dynamic_fn);
     /* flushing every row is what lets an interrupted replay keep its log */
     if (n < 0 || fflush(log->csv) != 0)
         return false;
@@ -95,7 +98,9 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
     if (!isnan(r->ssim) && !series_push(&log->ssim, r->ssim))
         return false;
     return series_push(&log->psnr, r->psnr_db) && series_push(&log->fn, (double)r->fn_pixels) &&
-           series_push(&log->render_full, r->render_full_ms) &&
+           series_push(&log->static_fraction, r->static_pvs_fraction) &&
+           series_push(&log->dynamic_fraction, r->dynamic_pvs_fraction) &&
+           series_push(&log->dynamic_fn, (double)r->dynamic_fn_pixels) && series_push(&log->render_full, r->render_full_ms) &&
            series_push(&log->render_pvs, r->render_pvs_ms) && series_push(&log->pose_age, r->pose_age_ms);
 }
 
@@ -137,6 +142,7 @@ double tv_replay_log_worst_psnr(const tv_replay_log* log)
 static void free_series(tv_replay_log* log)
 {
     series* all[] = {&log->psnr,       &log->ssim,        &log->fn,         &log->pvs_fraction,
+                     &log->static_fraction, &log->dynamic_fraction, &log->dynamic_fn,
                      &log->delta,      &log->fov,         &log->render_full, &log->render_pvs,
                      &log->pvs_ms,     &log->pred_pos,    &log->pred_rot,   &log->pose_age};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++)
@@ -148,7 +154,7 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
 {
     struct {
         double psnr_mean, psnr_min, psnr_p5, ssim_mean, ssim_p5, fn_mean, fn_max, pvs_fraction, delta, fov, pvs_ms, pvs_ms_median,
-            full_ms, pvs_render_ms, pred_pos_p99, pred_rot_p99, pose_age;
+            full_ms, pvs_render_ms, pred_pos_p99, pred_rot_p99, pose_age, static_fraction, dynamic_fraction, dynamic_fn;
     } sm = {
         /* PSNR of the mean squared error: identical frames (PSNR +inf) count as zero error */
         .psnr_mean = log->rows == 0 ? NAN
@@ -170,6 +176,9 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         .pred_pos_p99 = tv_percentile(log->pred_pos.v, log->pred_pos.n, 99.0),
         .pred_rot_p99 = tv_percentile(log->pred_rot.v, log->pred_rot.n, 99.0),
         .pose_age = tv_mean(log->pose_age.v, log->pose_age.n),
+        .static_fraction = tv_mean(log->static_fraction.v, log->static_fraction.n),
+        .dynamic_fraction = tv_mean(log->dynamic_fraction.v, log->dynamic_fraction.n),
+        .dynamic_fn = tv_mean(log->dynamic_fn.v, log->dynamic_fn.n),
     };
 
     char name[4200];
@@ -207,6 +216,9 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
             {"render_full_ms_mean", sm.full_ms},     {"render_pvs_ms_mean", sm.pvs_render_ms},
             {"pred_err_pos_p99_m", sm.pred_pos_p99}, {"pred_err_rot_p99_deg", sm.pred_rot_p99},
             {"pose_age_ms_mean", sm.pose_age},       {"wall_s", m->wall_s},
+            {"static_pvs_fraction_mean", sm.static_fraction},
+            {"dynamic_pvs_fraction", sm.dynamic_fraction},
+            {"dynamic_fn_pixels_mean", sm.dynamic_fn},
         };
         size_t count = sizeof nums / sizeof nums[0];
         for (size_t i = 0; i < count; i++) {
@@ -234,6 +246,9 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(table, " whole scene drawn     %8llu display frames (%llu whole-scene PVSs)\n",
                 (unsigned long long)log->whole_scene_frames, (unsigned long long)log->whole_scene_pvs);
         fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);
+        if (m->dynamic_tris)
+            fprintf(table, " movers: PVS / FN px   %8.2f %% of %u moving triangles (static %.2f %%) / %.2f mean\n",
+                    100.0 * sm.dynamic_fraction, m->dynamic_tris, 100.0 * sm.static_fraction, sm.dynamic_fn);
         fprintf(table, " delta / PVS FOV       %8.3f m / %.1f deg (means)\n", sm.delta, sm.fov);
         fprintf(table, " PVS compute           %8.1f ms mean over %zu PVSs (%llu over all directions, %llu clamped)\n",
                 sm.pvs_ms, log->pvs_ms.n, (unsigned long long)log->omni_pvs, (unsigned long long)log->clamped_pvs);

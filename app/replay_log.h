@@ -37,6 +37,9 @@ typedef struct tv_frame_row {
     bool rendered;           /* false: a coverage-only row, the image columns (and ssim) are empty */
     int pvs_frusta;          /* frusta of the PVS's viewcell (1, or 6 for every direction) */
     bool whole_scene;        /* drawn with every triangle (tv_pvs_pipeline_whole_scene) */
+    double static_pvs_fraction;  /* the PVS's static triangles over the scene's (summary only) */
+    double dynamic_pvs_fraction; /* the PVS's moving triangles over the scene's; 0 without movers */
+    uint64_t dynamic_fn_pixels;  /* fn_pixels on moving triangles */
 } tv_frame_row;
 
 typedef struct tv_replay_log tv_replay_log;
@@ -71,6 +74,7 @@ typedef struct tv_replay_meta {
     const char* policy;
     const char* latency_model;
     uint32_t scene_tris;
+    uint32_t dynamic_tris; /* the scene's moving triangles */
     unsigned width, height;
     double eye_fov_deg;
     uint64_t display_frames;

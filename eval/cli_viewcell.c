@@ -9,6 +9,7 @@ static void finish(pred_viewcell* vc, float delta, float fov_deg, float fov_pvs_
     vc->fov_target_deg = fov_deg;
     vc->fov_pvs_deg = fov_pvs_deg;
     vc->z = delta / tanf(0.5f * fov_pvs_deg * (float)PRED_DEG);
+    vc->t_end = vc->t_begin + TV_VIEWCELL_WINDOW_S;
     for (int i = 0; i < 3; i++)
         vc->apex[i] = vc->v0[i] - vc->z * vc->forward[i];
 }
@@ -45,6 +46,7 @@ void tv_viewcell_at_pose(const pred_pose* head, float delta, float fov_deg, floa
     pred_pose_forward(head->q, f);
     pred_pose_up(head->q, u);
     memset(out, 0, sizeof *out);
+    out->t_begin = head->t;
     for (int i = 0; i < 3; i++) {
         out->v0[i] = (float)head->p[i];
         out->forward[i] = (float)f[i];

@@ -16,6 +16,11 @@
 bool tv_viewcell_make(const float pos[3], const float dir[3], float delta, float fov_deg, float fov_pvs_deg,
                       pred_viewcell* out);
 
+/* The use window of these viewcells (what scenes with movers are sampled
+ * over): the replay's default, one 50 ms latency plus one 90 Hz frame, from
+ * the pose's time (tv_viewcell_make: from 0). */
+#define TV_VIEWCELL_WINDOW_S (0.05 + 1.0 / 90.0)
+
 /* The same at a head pose (position, forward and up of its orientation). */
 void tv_viewcell_at_pose(const pred_pose* head, float delta, float fov_deg, float fov_pvs_deg, pred_viewcell* out);
 

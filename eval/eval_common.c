@@ -204,7 +204,16 @@ bool tv_eval_cell_run(pvs_method* m, rnd_context* rnd, const scn_scene* scene, c
     pvs_request req = tv_eval_request(c, eye_fov_deg);
     uint32_t* ids = NULL;
     uint32_t count = 0;
-    if (!pvs_method_compute(m, &req, &ids, &count, &c->st, err, err_size))
+    pvs_proxy* proxies = calloc(scene->mover_count ? scene->mover_count : 1, sizeof *proxies);
+    if (!proxies) {
+        snprintf(err, err_size, "out of memory");
+        return false;
+    }
+    req.proxies = proxies;
+    req.proxy_count = pvs_method_proxies(scene, c->vc.t_begin, c->vc.t_end, proxies);
+    bool computed = pvs_method_compute(m, &req, &ids, &count, &c->st, err, err_size);
+    free(proxies);
+    if (!computed)
         return false;
     keep_layers(c);
     c->pvs_ms = c->st.total_ms;
@@ -246,6 +255,7 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
         m->fng_pixels_max = fmax(m->fng_pixels_max, x->fng_pixels_max);
         m->fng_fraction_mean += x->fng_fraction_mean / n;
         m->fng_reliable_pixels_mean += x->fng_reliable_pixels_mean / n;
+        m->fng_dynamic_pixels_mean += x->fng_dynamic_pixels_mean / n;
         if (isfinite(x->psnr_mean_db))
             mse += 255.0 * 255.0 / pow(10.0, x->psnr_mean_db / 10.0) / n;
         m->psnr_min_db = fmin(m->psnr_min_db, x->psnr_min_db);
@@ -298,7 +308,8 @@ void tv_eval_json_metrics(FILE* f, const tv_eval_cell* c, const char* indent)
     tv_json_num(f, "fng_pixels_mean", m->fng_pixels_mean, ", ");
     tv_json_num(f, "fng_pixels_max", m->fng_pixels_max, ", ");
     tv_json_num(f, "fng_fraction_mean", m->fng_fraction_mean, ", ");
-    tv_json_num(f, "fng_reliable_pixels_mean", m->fng_reliable_pixels_mean, ",\n");
+    tv_json_num(f, "fng_reliable_pixels_mean", m->fng_reliable_pixels_mean, ", ");
+    tv_json_num(f, "fng_dynamic_pixels_mean", m->fng_dynamic_pixels_mean, ",\n");
     fprintf(f, "%s", indent);
     tv_json_num(f, "psnr_mean_db", m->psnr_mean_db, ", ");
     tv_json_num(f, "psnr_min_db", m->psnr_min_db, ", ");

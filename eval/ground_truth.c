@@ -282,10 +282,16 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
                  vc->delta, vc->fov_pvs_deg);
         goto done;
     }
-    double sum_sq = 0.0, fn_sum = 0.0, fn_rel_sum = 0.0, gt_sum_ms = 0.0, ssim_sum = 0.0;
+    double sum_sq = 0.0, fn_sum = 0.0, fn_rel_sum = 0.0, fn_dyn_sum = 0.0, gt_sum_ms = 0.0, ssim_sum = 0.0;
+    uint32_t first_dynamic = scene->triangle_count - scene->dynamic_triangle_count;
     out->psnr_min_db = INFINITY;
     for (uint32_t s = 0; s < n; s++) {
         rnd_draw_stats full_st, pvs_st;
+        if (d.pose && scene->mover_count) { /* golden-ratio times: every prefix spreads over the window */
+            double u = fmod((s + 0.5) * 0.6180339887498949, 1.0);
+            if (!(gpu = d.pose(d.pose_user, vc->t_begin + u * (vc->t_end - vc->t_begin), err, err_size)))
+                goto done;
+        }
         double ts = tv_now_ms();
         bool drawn = rnd_draw(ctx, target, gpu, &b.cams[s], NULL, 0, &full_st) &&
                      rnd_target_read_ids(ctx, target, b.ids);
@@ -317,6 +323,7 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
             if (!pvs_mask[id]) {
                 fn++;
                 fn_rel += !b.unreliable[id];
+                fn_dyn_sum += id >= first_dynamic;
             }
         }
         fn_sum += (double)fn;
@@ -338,6 +345,7 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
     out->samples = n;
     out->fng_pixels_mean = fn_sum / n;
     out->fng_reliable_pixels_mean = fn_rel_sum / n;
+    out->fng_dynamic_pixels_mean = fn_dyn_sum / n;
     out->fng_fraction_mean = out->fng_pixels_mean / (double)pixels;
     double mse = sum_sq / n;
     out->psnr_mean_db = mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;

@@ -34,6 +34,13 @@ typedef struct pvs_eval_desc {
     float eye_fov_h_deg;   /* eye horizontal FOV: the viewcell's fov_target_deg; vertical from the aspect */
     float near_m, far_m;   /* eye clip planes: 0.05 m, 500 m */
     uint32_t seed;         /* sample jitter */
+    /* Scenes with movers: sample view s is drawn at its own time of the
+     * viewcell's use window [t_begin, t_end] (a low-discrepancy sequence,
+     * uncorrelated with the views' positions), on the upload pose() returns
+     * for that time (NULL with err filled on failure). NULL: every view at
+     * the scene's current pose. */
+    const rnd_gpu_scene* (*pose)(void* user, double t, char* err, size_t err_size);
+    void* pose_user;
 } pvs_eval_desc;
 
 /* Fills `cams[0..n)` with the sample eye cameras of `vc` (deterministic for
@@ -61,6 +68,7 @@ typedef struct pvs_eval_result {
     double fng_pixels_mean, fng_pixels_max; /* FN pixels per sample view */
     double fng_fraction_mean;     /* FNG / pixels per view */
     double fng_reliable_pixels_mean; /* FNG*: FN pixels of reliable triangles only */
+    double fng_dynamic_pixels_mean;  /* FN pixels on moving triangles (scn_scene.dynamic_triangle_count) */
     double psnr_mean_db;          /* PSNR of the mean squared error over all views (+inf if none) */
     double psnr_min_db;           /* worst view */
     uint32_t worst_view;          /* index of the worst-PSNR sample */

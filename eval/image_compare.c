@@ -39,19 +39,25 @@ size_t rnd_count_diff_pixels(const uint8_t* a, const uint8_t* b, size_t pixel_co
     return count;
 }
 
-size_t rnd_count_fn_pixels(const uint32_t* full_ids, size_t pixel_count, const uint8_t* tri_in_set,
-                           size_t triangle_count)
+size_t rnd_count_fn_pixels_from(const uint32_t* full_ids, size_t pixel_count, const uint8_t* tri_in_set,
+                                size_t triangle_count, uint32_t first_id)
 {
     assert(full_ids && tri_in_set);
     size_t count = 0;
     for (size_t p = 0; p < pixel_count; p++) {
         uint32_t id = full_ids[p];
-        if (id == TV_NO_TRIANGLE)
+        if (id == TV_NO_TRIANGLE || id < first_id)
             continue;
         assert(id < triangle_count);
         count += tri_in_set[id] == 0;
     }
     return count;
+}
+
+size_t rnd_count_fn_pixels(const uint32_t* full_ids, size_t pixel_count, const uint8_t* tri_in_set,
+                           size_t triangle_count)
+{
+    return rnd_count_fn_pixels_from(full_ids, pixel_count, tri_in_set, triangle_count, 0);
 }
 
 typedef enum colour_class { CLASS_KEEP, CLASS_BLUE, CLASS_GREY, CLASS_RED } colour_class;

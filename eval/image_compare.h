@@ -28,6 +28,11 @@ size_t rnd_count_diff_pixels(const uint8_t* a, const uint8_t* b, size_t pixel_co
 size_t rnd_count_fn_pixels(const uint32_t* full_ids, size_t pixel_count, const uint8_t* tri_in_set,
                            size_t triangle_count);
 
+/* The same, counting only pixels whose id is at least first_id (the moving
+ * triangles of a scene: first_id = triangle_count - dynamic_triangle_count). */
+size_t rnd_count_fn_pixels_from(const uint32_t* full_ids, size_t pixel_count, const uint8_t* tri_in_set,
+                                size_t triangle_count, uint32_t first_id);
+
 /* The paper's Figure 1 colours, per pixel of a full render (rgba, 4 bytes
  * per pixel) and its id buffer, into out (out_stride 3 or 4 bytes per
  * pixel; out == rgba with stride 4 recolours in place): triangles in

@@ -158,6 +158,16 @@ static bool _whole_scene(const pvs_method* m, uint32_t** ids, uint32_t* count, p
     return true;
 }
 
+uint32_t pvs_method_proxies(const scn_scene* scene, double t0, double t1, pvs_proxy* out)
+{
+    for (uint32_t i = 0; i < scene->mover_count; i++) {
+        scn_mover_bounds(scene, i, t0, t1, out[i].box_min, out[i].box_max);
+        out[i].first_id = scene->movers[i].first_triangle;
+        out[i].id_count = scene->movers[i].triangle_count;
+    }
+    return scene->mover_count;
+}
+
 bool pvs_method_compute(pvs_method* m, const pvs_request* in, uint32_t** ids, uint32_t* count,
                         pvs_method_stats* stats, char* err, size_t err_size)
 {
@@ -180,6 +190,15 @@ bool pvs_method_compute(pvs_method* m, const pvs_request* in, uint32_t** ids, ui
     uint32_t n = 0;
     if (!m->ops->compute(m, &req, &list, &n, &st, err, err_size))
         return false;
+    if (m->kind != PVS_METHOD_TR && req.proxy_count) { /* only tr sorts movers in: the rest take them all */
+        for (uint32_t i = 0; list && i < n; i++)
+            m->mask[list[i]] = 1;
+        for (uint32_t i = 0; i < req.proxy_count; i++)
+            memset(m->mask + req.proxies[i].first_id, 1, req.proxies[i].id_count);
+        free(list);
+        list = NULL;
+        n = 0;
+    }
     if (!list) {
         for (uint32_t t = 0; t < m->triangle_count; t++)
             n += m->mask[t];

@@ -64,6 +64,11 @@ typedef struct pvs_request {
     pred_pose current;     /* newest head pose at request time (frompoint; a zero
                               orientation is refused) */
     float eye_fov_h_deg;   /* display FOV of the eyes; 0: vc.fov_target_deg */
+    const pvs_proxy* proxies; /* the scene's movers over the use window [vc.t_begin, vc.t_end]:
+                                 tr sorts them in (pvs_compute_dynamic); every other method adds
+                                 every proxy's ids (conservative); the caller keeps them alive
+                                 until the compute returns */
+    uint32_t proxy_count;
 } pvs_request;
 
 typedef struct pvs_method_stats {
@@ -74,6 +79,11 @@ typedef struct pvs_method_stats {
 } pvs_method_stats;
 
 typedef struct pvs_method pvs_method;
+
+/* Fills one proxy per mover of `scene` (mover_count entries): the box it
+ * sweeps over [t0, t1] (scn_mover_bounds) and its triangle ids. Returns the
+ * count. */
+uint32_t pvs_method_proxies(const scn_scene* scene, double t0, double t1, pvs_proxy* out);
 
 /* Creates a method for `scene` (uploaded as `gpu` on `rnd`). NULL with a
  * one-line reason on failure (for q3vis: a missing or malformed .pvs.json

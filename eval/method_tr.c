@@ -22,7 +22,7 @@ static bool _compute(pvs_method* m, const pvs_request* req, uint32_t** ids, uint
     pvs_viewcell vc;
     pvs_result r;
     if (!pvs_viewcell_from_pred(&req->vc, m->desc.far_m, &vc, err, err_size) ||
-        !pvs_compute(m->impl, &vc, &r, err, err_size))
+        !pvs_compute_dynamic(m->impl, &vc, req->proxies, req->proxy_count, &r, err, err_size))
         return false;
     /* the context's list lives only until its next compute: the caller owns a copy */
     *ids = malloc((r.count ? r.count : 1) * sizeof(uint32_t));

@@ -4,6 +4,7 @@
 
 #include "mesh_shared.h"
 
+#include <assert.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,13 +31,14 @@ typedef struct scene_array {
     VkDeviceSize size;
 } scene_array;
 
-static float* interleave_attribs(const scn_scene* s)
+/* Attributes of vertices [first, first + count), interleaved. */
+static float* interleave_attribs(const scn_scene* s, uint32_t first, uint32_t count)
 {
-    float* out = malloc((size_t)s->vertex_count * ATTRIB_STRIDE * sizeof(float));
+    float* out = malloc((size_t)(count ? count : 1) * ATTRIB_STRIDE * sizeof(float));
     if (!out)
         return NULL;
-    for (uint32_t v = 0; v < s->vertex_count; v++) {
-        float* a = out + (size_t)v * ATTRIB_STRIDE;
+    for (uint32_t v = first; v < first + count; v++) {
+        float* a = out + (size_t)(v - first) * ATTRIB_STRIDE;
         memcpy(a, s->normals + 3 * (size_t)v, 3 * sizeof(float));
         memcpy(a + 3, s->uvs + 2 * (size_t)v, 2 * sizeof(float));
     }
@@ -161,7 +163,7 @@ rnd_gpu_scene* rnd_scene_create(rnd_context* ctx, const scn_scene* s, char* err,
     if (!check_scene(ctx, s, err, err_size))
         return NULL;
     rnd_gpu_scene* g = calloc(1, sizeof *g);
-    float* attribs = interleave_attribs(s);
+    float* attribs = interleave_attribs(s, 0, s->vertex_count);
     material_gpu* materials = convert_materials(s);
     if (!g || !attribs || !materials) {
         snprintf(err, err_size, "scene %s: out of memory preparing the upload", s->name);
@@ -195,6 +197,53 @@ rnd_gpu_scene* rnd_scene_create(rnd_context* ctx, const scn_scene* s, char* err,
         return NULL;
     }
     return g;
+}
+
+bool rnd_scene_update_vertices(rnd_context* ctx, rnd_gpu_scene* g, const scn_scene* s, uint32_t first,
+                               uint32_t count, char* err, size_t err_size)
+{
+    assert(ctx && g && s && (uint64_t)first + count <= s->vertex_count);
+    if (count == 0)
+        return true;
+    float* attribs = interleave_attribs(s, first, count);
+    if (!attribs) {
+        snprintf(err, err_size, "scene %s: out of memory preparing a vertex update", s->name);
+        return false;
+    }
+    const VkDeviceSize attrib_bytes = ATTRIB_STRIDE * sizeof(float), position_bytes = 3 * sizeof(float);
+    rnd_stream stream = {0};
+    rnd_staging staging = {0};
+    /* earlier draws' reads finish before the copy writes, the copy before later draws read */
+    VkMemoryBarrier2 before = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                               .srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                               .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+                               .dstStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+                               .dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT};
+    VkMemoryBarrier2 after = {.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                              .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+                              .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                              .dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                              .dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+    bool ok = rnd_stream_create(ctx, &stream, err, err_size) && rnd_stream_begin(ctx, &stream, err, err_size);
+    if (ok) {
+        vkCmdPipelineBarrier2(stream.cmd, &(VkDependencyInfo){.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                                              .memoryBarrierCount = 1,
+                                                              .pMemoryBarriers = &before});
+        ok = rnd_upload_buffer_at(ctx, stream.cmd, &staging, s->positions + 3 * (size_t)first, count * position_bytes,
+                                  g->positions.buffer, first * position_bytes, err, err_size) &&
+             rnd_upload_buffer_at(ctx, stream.cmd, &staging, attribs, count * attrib_bytes, g->attribs.buffer,
+                                  first * attrib_bytes, err, err_size);
+    }
+    if (ok) {
+        vkCmdPipelineBarrier2(stream.cmd, &(VkDependencyInfo){.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
+                                                              .memoryBarrierCount = 1,
+                                                              .pMemoryBarriers = &after});
+        ok = rnd_stream_submit_wait(ctx, &stream, err, err_size);
+    }
+    rnd_staging_release(ctx, &staging);
+    rnd_stream_destroy(ctx, &stream);
+    free(attribs);
+    return ok;
 }
 
 uint32_t rnd_scene_triangle_count(const rnd_gpu_scene* scene) { return scene->triangle_count; }

@@ -81,6 +81,14 @@ const char* rnd_device_name(const rnd_context* ctx);
  * The scn_scene is not referenced after the call. */
 rnd_gpu_scene* rnd_scene_create(rnd_context* ctx, const scn_scene* scene, char* err, size_t err_size);
 
+/* Uploads the positions and normals of vertices [first, first + count) of
+ * `scene` (the one `gpu` was created from, posed since: scn_scene_pose) and
+ * waits for the copy. Draws submitted after it see the new pose; the caller
+ * keeps draws of `gpu` on other threads out of the way (the replay gives the
+ * PVS worker its own upload). */
+bool rnd_scene_update_vertices(rnd_context* ctx, rnd_gpu_scene* gpu, const scn_scene* scene, uint32_t first,
+                               uint32_t count, char* err, size_t err_size);
+
 /* Triangle count of an uploaded scene. */
 uint32_t rnd_scene_triangle_count(const rnd_gpu_scene* scene);
 

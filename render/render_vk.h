@@ -121,6 +121,9 @@ typedef struct rnd_staging {
  * buffer added to staging. */
 bool rnd_upload_buffer(rnd_context* ctx, VkCommandBuffer cmd, rnd_staging* staging, const void* data,
                        VkDeviceSize size, VkBuffer dst, char* err, size_t err_size);
+/* The same into dst at byte `offset`. */
+bool rnd_upload_buffer_at(rnd_context* ctx, VkCommandBuffer cmd, rnd_staging* staging, const void* data,
+                          VkDeviceSize size, VkBuffer dst, VkDeviceSize offset, char* err, size_t err_size);
 /* Records a copy of tightly packed texels (layer after layer) into every
  * pixel of every layer of dst, leaving it
  * in SHADER_READ_ONLY_OPTIMAL for fragment and compute shaders. */

@@ -174,14 +174,20 @@ static rnd_buffer* stage(rnd_context* ctx, rnd_staging* staging, const void* dat
     return b;
 }
 
-bool rnd_upload_buffer(rnd_context* ctx, VkCommandBuffer cmd, rnd_staging* staging, const void* data,
-                       VkDeviceSize size, VkBuffer dst, char* err, size_t err_size)
+bool rnd_upload_buffer_at(rnd_context* ctx, VkCommandBuffer cmd, rnd_staging* staging, const void* data,
+                          VkDeviceSize size, VkBuffer dst, VkDeviceSize offset, char* err, size_t err_size)
 {
     rnd_buffer* src = stage(ctx, staging, data, size, err, err_size);
     if (!src)
         return false;
-    vkCmdCopyBuffer(cmd, src->buffer, dst, 1, &(VkBufferCopy){.size = size});
+    vkCmdCopyBuffer(cmd, src->buffer, dst, 1, &(VkBufferCopy){.dstOffset = offset, .size = size});
     return true;
+}
+
+bool rnd_upload_buffer(rnd_context* ctx, VkCommandBuffer cmd, rnd_staging* staging, const void* data,
+                       VkDeviceSize size, VkBuffer dst, char* err, size_t err_size)
+{
+    return rnd_upload_buffer_at(ctx, cmd, staging, data, size, dst, 0, err, err_size);
 }
 
 bool rnd_upload_image(rnd_context* ctx, VkCommandBuffer cmd, rnd_staging* staging, const void* texels,

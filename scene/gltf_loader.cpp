@@ -3,7 +3,7 @@
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
-#include <tiny_gltf.h>
+#include "gltf_internal.hpp" // includes tiny_gltf.h: first here, with the implementation
 
 #include "gltf_loader.h"
 #include "image_io.h"
@@ -16,18 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-struct Loader {
-    const char* path;
-    tinygltf::Model model;
-    scn_builder builder;
-    std::vector<int> material_map; // glTF material -> scn material, -1 until used
-    std::vector<int> image_map;    // glTF image -> scn texture, -1 until used
-    int default_material = -1;
-    int skipped_mode = -1;         // mode of a points/lines primitive left out, -1 if none
-    std::string problem;           // set on failure (without the file name)
-};
+namespace tv_gltf {
 
 bool image_callback(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
                     const unsigned char* bytes, int size, void* user)
@@ -301,7 +290,7 @@ bool append_primitive(Loader& L, const tinygltf::Primitive& prim, const float wo
     return scn_builder_append_mesh(&L.builder, &in, L.path, err, err_size);
 }
 
-bool visit_node(Loader& L, int index, const float parent[16], int depth, char* err, size_t err_size)
+bool visit_node(Loader& L, int index, const float parent[16], int depth, int moving, char* err, size_t err_size)
 {
     if (index < 0 || (size_t)index >= L.model.nodes.size() || depth > 256) {
         L.problem = depth > 256 ? "node hierarchy is deeper than 256 (a cycle?)" : "node " + std::to_string(index) + " does not exist";
@@ -318,17 +307,34 @@ bool visit_node(Loader& L, int index, const float parent[16], int depth, char* e
                      node.rotation.size() == 4 ? node.rotation.data() : r0, node.scale.size() == 3 ? node.scale.data() : s0);
     }
     scn_mat4_mul(world, parent, local);
+    // an animated node starts a mover: its subtree's meshes wait in its
+    // local frame (identity here) until every static mesh is in
+    if (moving < 0 && is_animated(L, index)) {
+        moving = index;
+        std::memcpy(L.anim[index].parent, parent, sizeof L.anim[index].parent);
+        const float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+        std::memcpy(world, identity, sizeof world);
+    } else if (moving >= 0 && is_animated(L, index)) {
+        warn_once(L, L.warned_nested, "a node animated inside an animated node moves with the outer one only");
+    }
+    if (node.skin >= 0)
+        warn_once(L, L.warned_skin, "skins are not supported: skinned meshes stay in their bind pose");
     if (node.mesh >= 0) {
         if ((size_t)node.mesh >= L.model.meshes.size()) {
             L.problem = "node " + std::to_string(index) + " references missing mesh " + std::to_string(node.mesh);
             return false;
         }
-        for (const tinygltf::Primitive& prim : L.model.meshes[node.mesh].primitives)
-            if (!append_primitive(L, prim, world, err, err_size))
+        for (const tinygltf::Primitive& prim : L.model.meshes[node.mesh].primitives) {
+            if (!prim.targets.empty())
+                warn_once(L, L.warned_morph, "morph targets are not supported: meshes keep their base shape");
+            if (moving >= 0)
+                L.anim[moving].meshes.push_back({ &prim, std::vector<float>(world, world + 16) });
+            else if (!append_primitive(L, prim, world, err, err_size))
                 return false;
+        }
     }
     for (int child : node.children)
-        if (!visit_node(L, child, world, depth + 1, err, err_size))
+        if (!visit_node(L, child, world, depth + 1, moving, err, err_size))
             return false;
     return true;
 }
@@ -471,8 +477,10 @@ bool load(const char* path, scn_scene* out, char* err, size_t err_size)
     const float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
     std::vector<int> roots;
     bool ok_nodes = root_nodes(L, roots);
+    ok_nodes = ok_nodes && read_animations(L);
     for (size_t i = 0; ok_nodes && i < roots.size(); i++)
-        ok_nodes = visit_node(L, roots[i], identity, 0, err, err_size);
+        ok_nodes = visit_node(L, roots[i], identity, 0, -1, err, err_size);
+    ok_nodes = ok_nodes && append_movers(L, err, err_size);
     if (ok_nodes && out->triangle_count == 0) {
         L.problem = L.skipped_mode >= 0 ? "has only point/line primitives (mode " + std::to_string(L.skipped_mode) +
                                               "); trimvr renders triangles only"
@@ -488,17 +496,17 @@ bool load(const char* path, scn_scene* out, char* err, size_t err_size)
     return scn_builder_finish(&L.builder, path, err, err_size);
 }
 
-} // namespace
+} // namespace tv_gltf
 
 extern "C" bool scn_load_gltf(const char* path, scn_scene* out, char* err, size_t err_size)
 {
     // No C++ exception may cross into C: bad_alloc inside tinygltf or the
     // vectors becomes an ordinary error.
     try {
-        return load(path, out, err, err_size);
+        return tv_gltf::load(path, out, err, err_size);
     } catch (const std::exception& e) {
         scn_scene_free(out);
-        std::snprintf(err, err_size, "%s: %s", path, one_line(e.what()).c_str());
+        std::snprintf(err, err_size, "%s: %s", path, tv_gltf::one_line(e.what()).c_str());
         return false;
     }
 }

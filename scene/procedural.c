@@ -12,16 +12,18 @@ const char* scn_builtin_help(void)
 {
     return "Built-in scenes: builtin:<name>[?key=value[&key=value...]]\n"
            "  builtin:city      streets and buildings; keys: seed=<u64> (default 1),\n"
-           "                    tris=<10000..16000000> target triangles (default 150000)\n"
-           "  builtin:interior  rooms, corridor, doorways, columns; keys: seed=<u64>\n"
+           "                    tris=<10000..16000000> target triangles (default 150000),\n"
+           "                    movers=<0..10000> vehicles and pedestrians on the streets (default 0)\n"
+           "  builtin:interior  rooms, corridor, doorways, columns; keys: seed=<u64>,\n"
+           "                    movers=<0..10000> swinging doors, carts, objects crossing rooms (default 0)\n"
            "  builtin:unit      wall, boxes and ground with analytic visibility; no keys\n"
-           "Examples: builtin:city?seed=3&tris=500000  builtin:interior?seed=2\n";
+           "Examples: builtin:city?seed=3&tris=500000  builtin:interior?seed=2&movers=12\n";
 }
 
 typedef struct builtin_params {
     uint64_t seed;
-    uint64_t tris;
-    bool has_seed, has_tris;
+    uint64_t tris, movers;
+    bool has_seed, has_tris, has_movers;
 } builtin_params;
 
 static bool _scn_parse_u64(const char* text, size_t len, uint64_t* out)
@@ -55,7 +57,8 @@ static bool _scn_parse_params(const char* spec, const char* query, builtin_param
         bool ok = _scn_parse_u64(eq + 1, value_len, &value);
         bool is_seed = key_len == 4 && strncmp(query, "seed", 4) == 0;
         bool is_tris = key_len == 4 && strncmp(query, "tris", 4) == 0;
-        if ((is_seed && p->has_seed) || (is_tris && p->has_tris)) {
+        bool is_movers = key_len == 6 && strncmp(query, "movers", 6) == 0;
+        if ((is_seed && p->has_seed) || (is_tris && p->has_tris) || (is_movers && p->has_movers)) {
             snprintf(err, err_size, "%s: parameter '%.*s' given twice", spec, (int)key_len, query);
             return false;
         }
@@ -63,8 +66,11 @@ static bool _scn_parse_params(const char* spec, const char* query, builtin_param
             p->seed = value, p->has_seed = true;
         } else if (is_tris && ok) {
             p->tris = value, p->has_tris = true;
+        } else if (is_movers && ok && value <= 10000) {
+            p->movers = value, p->has_movers = true;
         } else {
-            snprintf(err, err_size, "%s: bad parameter '%.*s' (expected seed=<u64> or tris=<count>)", spec, (int)len, query);
+            snprintf(err, err_size, "%s: bad parameter '%.*s' (expected seed=<u64>, tris=<count> or movers=<0..10000>)",
+                     spec, (int)len, query);
             return false;
         }
         query = amp ? amp + 1 : NULL;
@@ -88,10 +94,10 @@ bool scn_load_builtin(const char* spec, scn_scene* out, char* err, size_t err_si
             snprintf(err, err_size, "%s: tris=%llu out of range (10000..16000000)", spec, (unsigned long long)p.tris);
             return false;
         }
-        scn_gen_city(&b, p.seed, (uint32_t)p.tris);
+        scn_gen_city(&b, p.seed, (uint32_t)p.tris, (uint32_t)p.movers);
     } else if (name_len == 8 && strncmp(name, "interior", 8) == 0 && !p.has_tris) {
-        scn_gen_interior(&b, p.seed);
-    } else if (name_len == 4 && strncmp(name, "unit", 4) == 0 && !p.has_tris && !p.has_seed) {
+        scn_gen_interior(&b, p.seed, (uint32_t)p.movers);
+    } else if (name_len == 4 && strncmp(name, "unit", 4) == 0 && !p.has_tris && !p.has_seed && !p.has_movers) {
         scn_gen_unit(&b);
     } else {
         snprintf(err, err_size, "%s: unknown built-in scene or parameter not accepted by it (see scn_builtin_help)", spec);

@@ -12,6 +12,10 @@
  *   beyond). Every street is free of geometry for 0 < y <= 6 m within 4 m of
  *   its centreline (the ground itself is at y = 0), for the whole extent.
  *
+ * Both take movers=N (0..10000, default 0): N moving objects appended after
+ * the static scene, which stays bit-identical (procgen_movers.c,
+ * docs/scenes.md "Movers").
+ *
  * builtin:interior[?seed=S]  rooms off a corridor. Floor y = 0, ceilings
  *   y = 3. Corridor: x in [-24, 24], z in [-1.5, 1.5], walls 0.2 m thick at
  *   z in [1.5, 1.7] and [-1.7, -1.5], end walls x in [24, 24.2] and

@@ -59,8 +59,13 @@ void scn_gen_box(scn_builder* b, const float lo[3], const float hi[3], unsigned 
                  uint32_t material);
 
 /* Built-in scene generators; `tris` is the city's triangle target. */
-void scn_gen_city(scn_builder* b, uint64_t seed, uint32_t tris);
-void scn_gen_interior(scn_builder* b, uint64_t seed);
+void scn_gen_city(scn_builder* b, uint64_t seed, uint32_t tris, uint32_t movers);
+void scn_gen_interior(scn_builder* b, uint64_t seed, uint32_t movers);
 void scn_gen_unit(scn_builder* b);
+
+/* `count` movers of the city (blocks per half-extent as generated) or the
+ * interior, appended after the static scene (procgen_movers.c). */
+void scn_gen_city_movers(scn_builder* b, uint64_t seed, int blocks, uint32_t count);
+void scn_gen_interior_movers(scn_builder* b, uint64_t seed, uint32_t count);
 
 #endif

@@ -277,7 +277,7 @@ static uint64_t _city_count(uint64_t seed, int n, float cell)
     return tris;
 }
 
-void scn_gen_city(scn_builder* b, uint64_t seed, uint32_t tris)
+void scn_gen_city(scn_builder* b, uint64_t seed, uint32_t tris, uint32_t movers)
 {
     int n = tris <= 300000 ? 2 : tris <= 1200000 ? 3 : 4; /* blocks per half-extent */
     float lo = logf(0.25f), hi = logf(40.0f);
@@ -291,4 +291,5 @@ void scn_gen_city(scn_builder* b, uint64_t seed, uint32_t tris)
     float cell = expf(lo); /* the largest cell still giving at least `tris` */
     tv_log(TV_LOG_DEBUG, "builtin:city: %d blocks per side, window cell %.3f m for %u triangles", 2 * n, cell, tris);
     _city_emit(b, seed, n, cell);
+    scn_gen_city_movers(b, seed, n, movers);
 }

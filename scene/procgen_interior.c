@@ -83,7 +83,7 @@ static void _room(interior* in, float cx, float s)
     }
 }
 
-void scn_gen_interior(scn_builder* b, uint64_t seed)
+void scn_gen_interior(scn_builder* b, uint64_t seed, uint32_t movers)
 {
     interior in = { .b = b };
     tv_rng_seed(&in.rng, seed, 0x1A7);
@@ -104,4 +104,5 @@ void scn_gen_interior(scn_builder* b, uint64_t seed)
         _room(&in, room_x[r], 1.0f);
         _room(&in, room_x[r], -1.0f);
     }
+    scn_gen_interior_movers(b, seed, movers);
 }

@@ -44,6 +44,9 @@ void scn_scene_free(scn_scene* scene)
     for (uint32_t i = 0; i < scene->texture_count; i++)
         free(scene->textures[i].rgba8);
     free(scene->textures);
+    for (uint32_t i = 0; i < scene->mover_count; i++)
+        scn_mover_free(&scene->movers[i]);
+    free(scene->movers);
     memset(scene, 0, sizeof *scene);
 }
 
@@ -67,8 +70,11 @@ void scn_scene_update_bounds(scn_scene* scene)
 void scn_scene_summary(const scn_scene* scene, char* buf, size_t buf_size)
 {
     assert(scene && buf && buf_size > 0);
-    snprintf(buf, buf_size, "%s: %u triangles, %u vertices, %u materials, %u textures, bounds (%.2f %.2f %.2f)-(%.2f %.2f %.2f)",
-             scene->name, scene->triangle_count, scene->vertex_count, scene->material_count,
+    char movers[64] = "";
+    if (scene->mover_count)
+        snprintf(movers, sizeof movers, " (%u moving in %u movers)", scene->dynamic_triangle_count, scene->mover_count);
+    snprintf(buf, buf_size, "%s: %u triangles%s, %u vertices, %u materials, %u textures, bounds (%.2f %.2f %.2f)-(%.2f %.2f %.2f)",
+             scene->name, scene->triangle_count, movers, scene->vertex_count, scene->material_count,
              scene->texture_count, scene->bounds_min[0], scene->bounds_min[1], scene->bounds_min[2],
              scene->bounds_max[0], scene->bounds_max[1], scene->bounds_max[2]);
 }

@@ -16,6 +16,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "mover.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -64,6 +66,9 @@ typedef struct scn_scene {
     /* Triangles dropped at load time because they could never cover a pixel
      * (repeated index or zero world-space area); not part of triangle_count. */
     uint32_t degenerate_dropped;
+
+    uint32_t mover_count;
+    scn_mover* movers; /* mover.h: each owns a contiguous range of those triangles and their vertices */
 } scn_scene;
 
 /* Loads `spec` into `out` (zeroed first). `spec` is a file path (.gltf or

@@ -283,6 +283,63 @@ static bool _scn_generate_normals(scn_builder* b)
     return true;
 }
 
+void scn_builder_mover_begin(scn_builder* b)
+{
+    b->mover_vertex = b->scene->vertex_count;
+    b->mover_triangle = b->scene->triangle_count;
+}
+
+scn_mover* scn_builder_mover_end(scn_builder* b, const char* name)
+{
+    scn_scene* s = b->scene;
+    if (b->count_only || b->failed)
+        return NULL;
+    if (!_scn_grow((void**)&s->movers, &b->mover_capacity, (uint64_t)s->mover_count + 1, sizeof *s->movers)) {
+        b->failed = true;
+        return NULL;
+    }
+    scn_mover* m = &s->movers[s->mover_count++];
+    memset(m, 0, sizeof *m);
+    snprintf(m->name, sizeof m->name, "%s", name);
+    m->first_vertex = (uint32_t)b->mover_vertex;
+    m->vertex_count = (uint32_t)(s->vertex_count - b->mover_vertex);
+    m->first_triangle = (uint32_t)b->mover_triangle;
+    m->triangle_count = (uint32_t)(s->triangle_count - m->first_triangle);
+    for (int i = 0; i < 4; i++)
+        m->parent[5 * i] = 1.0f;
+    m->base_r[3] = 1.0f;
+    m->base_s[0] = m->base_s[1] = m->base_s[2] = 1.0f;
+    return m;
+}
+
+/* Rest geometry, dynamic range and t = 0 pose of the movers; scene bounds
+ * over their whole loops. */
+static bool _scn_finish_movers(scn_builder* b, const char* what, char* err, size_t err_size)
+{
+    scn_scene* s = b->scene;
+    if (!s->mover_count)
+        return true;
+    s->dynamic_triangle_count = s->triangle_count - s->movers[0].first_triangle;
+    for (uint32_t i = 0; i < s->mover_count; i++) {
+        char problem[256];
+        if (!scn_mover_init(&s->movers[i], s, problem, sizeof problem)) {
+            snprintf(err, err_size, "%s: %s", what, problem);
+            return false;
+        }
+    }
+    scn_scene_pose(s, 0.0);
+    scn_scene_update_bounds(s);
+    for (uint32_t i = 0; i < s->mover_count; i++) {
+        float mn[3], mx[3];
+        scn_mover_bounds(s, i, 0.0, s->movers[i].period_s, mn, mx);
+        for (int k = 0; k < 3; k++) {
+            s->bounds_min[k] = fminf(s->bounds_min[k], mn[k]);
+            s->bounds_max[k] = fmaxf(s->bounds_max[k], mx[k]);
+        }
+    }
+    return true;
+}
+
 bool scn_builder_finish(scn_builder* b, const char* what, char* err, size_t err_size)
 {
     if (!b->failed && b->needs_normal && !_scn_generate_normals(b))
@@ -299,6 +356,10 @@ bool scn_builder_finish(scn_builder* b, const char* what, char* err, size_t err_
                b->dropped_degenerate);
     b->scene->degenerate_dropped = b->dropped_degenerate;
     scn_scene_update_bounds(b->scene);
+    if (!_scn_finish_movers(b, what, err, err_size)) {
+        scn_scene_free(b->scene);
+        return false;
+    }
     return true;
 }
 

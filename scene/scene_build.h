@@ -22,6 +22,8 @@ typedef struct scn_builder {
     bool* needs_normal; /* per vertex, NULL until a mesh without normals is appended */
     uint64_t vertex_total, triangle_total; /* counts, valid in count_only mode too */
     uint32_t dropped_degenerate;
+    uint32_t mover_capacity;
+    uint32_t mover_vertex, mover_triangle; /* scene counts at scn_builder_mover_begin */
 } scn_builder;
 
 /* Starts building into `out` (zeroed first). With count_only no vertex or
@@ -63,8 +65,20 @@ typedef struct scn_mesh_input {
 bool scn_builder_append_mesh(scn_builder* b, const scn_mesh_input* mesh, const char* file,
                              char* err, size_t err_size);
 
-/* Generates the missing normals, computes bounds and hands the arrays to the
- * scene. Returns false (scene freed) when the builder failed. */
+/* Starts a mover: the vertices and triangles appended until
+ * scn_builder_mover_end are its geometry, in its local frame. Movers come
+ * after every static triangle. */
+void scn_builder_mover_begin(scn_builder* b);
+
+/* Ends the mover begun last and returns it with identity parent and base
+ * (T = 0, R = identity, S = 1) and no tracks, for the caller to fill now
+ * (the pointer is valid until the next mover); tracks' arrays are the
+ * mover's (malloc). NULL when the builder failed or only counts. */
+scn_mover* scn_builder_mover_end(scn_builder* b, const char* name);
+
+/* Generates the missing normals, takes the movers' rest geometry
+ * (scn_mover_init), poses them at t = 0, computes bounds (over every mover's
+ * whole loop) and hands the arrays to the scene. Returns false (scene freed) when the builder failed. */
 bool scn_builder_finish(scn_builder* b, const char* what, char* err, size_t err_size);
 
 /* Frees everything built so far. */
