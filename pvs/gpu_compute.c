@@ -452,7 +452,7 @@ bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char
     pvs_stats* st = &out->stats;
     rnd_camera cam = pvs_apex_camera(ctx, vc);
     pvs_view view = layer_view(ctx, vc, &cam);
-    if (!pvs_layers_build(&ctx->octree, &view, &ctx->layers, err, err_size))
+    if (!pvs_layers_build(&ctx->octree, &view, ctx->max_layers, &ctx->layers, err, err_size))
         return false;
     const pvs_layers* L = &ctx->layers;
     uint32_t widest = 0;

@@ -57,6 +57,7 @@ struct pvs_context {
 
     pvs_octree octree;
     pvs_layers layers;
+    uint32_t max_layers; /* pvs_desc.max_layers */
 
     rnd_stream stream;
     VkQueryPool timestamps; /* 2 per phase-step, VK_NULL_HANDLE when unsupported */
