@@ -39,7 +39,6 @@ static inline void check_configuration(fixture* f, const char* what, float delta
     pvs_result r;
     pvs_viewcell vc;
     compute_at_origin(f, delta, &vc, &r);
-    printf("  %u layers\n", r.stats.layers);
     TV_CHECK(f->octree_cap == 0 || r.stats.layers > 3);
     TV_CHECK(r.stats.layers <= (f->max_layers ? f->max_layers : PVS_LAYERS_DEFAULT_MAX));
     for (int i = 0; i < n_hidden; i++)
