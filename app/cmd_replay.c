@@ -21,7 +21,7 @@ typedef struct replay_opts {
     unsigned res[2];
     float latency_factor, cpu_ms, rate, noise_mm, noise_deg;
     int every, frames, seed;
-    bool noiseless, no_late_latch, no_plots, no_progress;
+    bool noiseless, no_late_latch, no_plots, no_progress, coverage_only;
 } replay_opts;
 
 static tv_args_result parse(replay_opts* o, int argc, char** argv)
@@ -44,6 +44,8 @@ static tv_args_result parse(replay_opts* o, int argc, char** argv)
         {"no-late-latch", TV_ARG_FLAG, &o->no_late_latch, NULL, "latch the pose at frame start instead of at submit"},
         {"no-plots", TV_ARG_FLAG, &o->no_plots, NULL, "skip the gnuplot PNGs"},
         {"no-progress", TV_ARG_FLAG, &o->no_progress, NULL, "no progress bar even on a terminal"},
+        {"coverage-only", TV_ARG_FLAG, &o->coverage_only, NULL,
+         "viewcell sizing and coverage of every frame only: no PVS, no image (fixed latency model)"},
     };
     enum { OWN = (int)(sizeof own / sizeof own[0]) };
     tv_arg args[OWN + TV_LOOP_ARG_COUNT];
@@ -61,6 +63,11 @@ static tv_args_result parse(replay_opts* o, int argc, char** argv)
 
 static bool validate(const replay_opts* o)
 {
+    if (o->coverage_only && o->latency_factor > 0.0f) {
+        tv_log(TV_LOG_ERROR, "--coverage-only: the measured latency model (--latency-factor %g) needs the PVS "
+               "computed, its time is the latency", o->latency_factor);
+        return false;
+    }
     return tv_loop_validate(&o->loop) && tv_arg_require("every", o->every, o->every >= 1, ">= 1") &&
            tv_arg_require("frames", o->frames, o->frames >= 0, ">= 0") &&
            tv_arg_require("latency-factor", o->latency_factor, o->latency_factor >= 0.0f && o->latency_factor <= 1000.0f,
@@ -101,6 +108,7 @@ static bool fill_desc(const replay_opts* o, tv_replay_desc* d)
     d->no_late_latch = o->no_late_latch;
     d->progress = !o->no_progress && isatty(STDERR_FILENO);
     d->plots = !o->no_plots;
+    d->coverage_only = o->coverage_only;
     return true;
 }
 

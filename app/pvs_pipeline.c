@@ -12,6 +12,20 @@ static bool compute_pvs(void* user, const void* request, uint32_t** ids, uint32_
     return pvs_method_compute(user, request, ids, count, stats, err, err_size);
 }
 
+/* no_pvs: an empty PVS, no method call. */
+static bool compute_empty(void* user, const void* request, uint32_t** ids, uint32_t* count, void* stats, char* err,
+                          size_t err_size)
+{
+    (void)user;
+    (void)request;
+    (void)stats; /* zeroed by the worker */
+    *count = 0;
+    *ids = malloc(sizeof **ids);
+    if (!*ids)
+        snprintf(err, err_size, "out of memory");
+    return *ids != NULL;
+}
+
 static void slot_release(tv_pvs_slot* s)
 {
     tv_pvs_result_free(&s->r);
@@ -33,23 +47,28 @@ bool tv_pvs_pipeline_start(tv_pvs_pipeline* p, const tv_pvs_pipeline_desc* desc,
                            const scn_scene* scene, const rnd_gpu_scene* gpu, char* err, size_t err_size)
 {
     assert(p && desc && rnd && scene && gpu);
+    assert(!desc->no_pvs || desc->latency_model == TV_LATENCY_FIXED);
     memset(p, 0, sizeof *p);
     p->desc = *desc;
     if (!(p->desc.latency_factor > 0.0))
         p->desc.latency_factor = 1.0;
     p->triangle_count = scene->triangle_count;
     p->latency_est_s = desc->latency_model == TV_LATENCY_FIXED ? desc->latency_s : 0.05;
+    /* tr's limit whatever the method: a cheap method sizes the same cells */
+    if (!(p->desc.viewcell.max_apex_offset_m > 0.0f))
+        p->desc.viewcell.max_apex_offset_m = pvs_max_apex_offset(desc->method.tr.near_m);
     pred_predictor_init(&p->predictor, &desc->predictor);
     if (!pred_error_tracker_init(&p->tracker, &(pred_error_tracker_desc){0})) {
         snprintf(err, err_size, "prediction error tracker: out of memory");
         return false;
     }
-    p->method = pvs_method_create(&desc->method, rnd, scene, gpu, err, err_size);
-    tv_worker_desc wd = {.compute = compute_pvs, .user = p->method, .stats_size = sizeof(pvs_method_stats),
-                         .extra_size = sizeof(pvs_request), .model = desc->latency_model,
+    p->method = desc->no_pvs ? NULL : pvs_method_create(&desc->method, rnd, scene, gpu, err, err_size);
+    tv_worker_desc wd = {.compute = desc->no_pvs ? compute_empty : compute_pvs, .user = p->method,
+                         .stats_size = sizeof(pvs_method_stats), .extra_size = sizeof(pvs_request),
+                         .model = desc->latency_model,
                          .fixed_latency_s = desc->latency_s, .factor = p->desc.latency_factor};
     tv_worker_describe(&wd, p->latency_name, sizeof p->latency_name);
-    if (p->method)
+    if (p->method || desc->no_pvs)
         p->worker = tv_worker_start(&wd, err, err_size);
     if (!p->worker) {
         tv_pvs_pipeline_stop(p);
@@ -113,6 +132,9 @@ static bool request(tv_pvs_pipeline* p, double t, double frame_s, bool first, ch
         if (req.vc.frusta == frusta || latency_for(p, req.vc.frusta) == latency)
             break;
     }
+    /* the whole scene needs no compute: in use from its arrival on */
+    if (req.vc.whole_scene)
+        req.vc.t_begin = t;
     tv_pvs_slot* s = &p->pending;
     s->pred_t0 = t;
     s->pred_dt = (vd.latency_s + vd.window_s + 2.0 * frame_s) / (TV_PVS_PREDICTION_STEPS - 1);
@@ -144,7 +166,8 @@ static bool adopt(tv_pvs_pipeline* p, tv_pvs_result* r, char* err, size_t err_si
     slot_release(&p->current);
     p->current = next;
     p->adopted++;
-    p->frustum_ms[p->timed++ % TV_PVS_TIMED] = r->compute_ms / (r->vc.frusta > 1 ? r->vc.frusta : 1);
+    if (!r->vc.whole_scene) /* listing every triangle says nothing about the compute time */
+        p->frustum_ms[p->timed++ % TV_PVS_TIMED] = r->compute_ms / (r->vc.frusta > 1 ? r->vc.frusta : 1);
     return true;
 }
 
@@ -170,6 +193,11 @@ int tv_pvs_pipeline_step(tv_pvs_pipeline* p, double t, double frame_s, bool may_
     if (may_request && !tv_worker_busy(p->worker) && !request(p, t, frame_s, false, err, err_size))
         return -1;
     return polled;
+}
+
+bool tv_pvs_pipeline_whole_scene(const tv_pvs_pipeline* p, double t)
+{
+    return p->current.r.vc.whole_scene || t > p->current.r.vc.t_end;
 }
 
 void tv_pvs_pipeline_predicted(const tv_pvs_pipeline* p, double t, pred_pose* out)

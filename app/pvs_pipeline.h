@@ -5,7 +5,9 @@
  * finished PVS is taken into use with a triangle mask, and under the
  * measured latency model the next window is sized for the slowest of the
  * recent per-frustum compute times x the request's frusta x latency_factor
- * (a PVS over all directions takes one compute per frustum).
+ * (a PVS over all directions takes one compute per frustum). A result is
+ * taken into use no earlier than its use window begins and is drawn no
+ * later than it ends (tv_pvs_pipeline_whole_scene).
  *
  * The clock is the caller's: simulated in the replay, fixed-step or wall
  * seconds in the demo. Calls come in time order: observe the samples up to
@@ -46,6 +48,10 @@ typedef struct tv_pvs_pipeline_desc {
     tv_latency_model latency_model;
     double latency_s;            /* fixed model: request -> availability */
     double latency_factor;       /* measured model: factor on the compute time; 0: 1 */
+    /* Coverage runs: no method is created and every PVS is empty. Under the
+     * fixed model the timeline, the sizing and the coverage test are the same
+     * as with any method (precondition: latency_model is TV_LATENCY_FIXED). */
+    bool no_pvs;
 } tv_pvs_pipeline_desc;
 
 typedef struct tv_pvs_pipeline {
@@ -91,6 +97,13 @@ bool tv_pvs_pipeline_first(tv_pvs_pipeline* p, double t, double frame_s, char* e
  * computation or sizing (err filled). */
 int tv_pvs_pipeline_step(tv_pvs_pipeline* p, double t, double frame_s, bool may_request, char* err,
                          size_t err_size);
+
+/* Whether the frame at t must draw the whole scene instead of the current
+ * PVS: it is a whole-scene one (its sizing's apex lay beyond what a PVS
+ * resolves), or t is past the end of the use window it was sized for (its
+ * successor is late: the compute outlasted the latency it was sized for).
+ * Either way a slow PVS costs drawing, never holes. */
+bool tv_pvs_pipeline_whole_scene(const tv_pvs_pipeline* p, double t);
 
 /* The head pose predicted for time t when the current PVS was requested. */
 void tv_pvs_pipeline_predicted(const tv_pvs_pipeline* p, double t, pred_pose* out);

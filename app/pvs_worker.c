@@ -135,7 +135,10 @@ static double availability(const tv_worker* w, double compute_ms)
 {
     if (w->desc.model == TV_LATENCY_FIXED)
         return w->t_request + w->desc.fixed_latency_s;
-    return w->t_request + compute_ms * 1e-3 * w->desc.factor;
+    /* a PVS faster than its sizing assumed waits for its use window: before
+     * it the eyes are not where the viewcell was sized for */
+    double t = w->t_request + compute_ms * 1e-3 * w->desc.factor;
+    return t > w->result.vc.t_begin ? t : w->result.vc.t_begin;
 }
 
 /* Hands the finished job out. Called with the mutex held, state DONE. */

@@ -6,7 +6,8 @@
  * and polls (tv_worker_poll) once per display frame. A result computed for a
  * request made at t_request becomes available at
  *   t_request + fixed_latency_s                       (TV_LATENCY_FIXED), or
- *   t_request + measured compute time * factor         (TV_LATENCY_MEASURED).
+ *   max(t_request + measured compute time * factor,    (TV_LATENCY_MEASURED),
+ *       the viewcell's t_begin)
  * Neither side blocks the other except when the display loop reaches a
  * simulated time at which the result is, or may be, due while the worker is
  * still computing: then tv_worker_poll waits in wall time until it is known

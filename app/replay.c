@@ -56,16 +56,24 @@ static const char* miss_token(pred_viewcell_miss why)
     return "unknown";
 }
 
+static double pvs_fraction(const replay_state* st)
+{
+    uint32_t n = st->s.scene.triangle_count;
+    return n ? (double)st->pipe.current.r.count / n : 0.0;
+}
+
 static void log_pvs(replay_state* st)
 {
     const tv_pvs_result* r = &st->pipe.current.r;
-    tv_replay_log_pvs(st->log, r->compute_ms, r->vc.frusta, r->vc.clamped);
+    tv_replay_log_pvs(st->log, r->compute_ms, r->vc.frusta, r->vc.clamped, r->vc.whole_scene);
 }
 
 /* One frames.csv row for eye e; `render`: draw and compare the images, else
- * a coverage-only row (an uncovered frame that --every skips). */
+ * a coverage-only row (an uncovered frame that --every skips); `whole`: the
+ * frame draws every triangle instead of the PVS. */
 static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_submit, int e, const pred_pose* eye,
-                    const pred_pose* predicted_eye, pred_viewcell_miss why, bool render, char* err, size_t err_size)
+                    const pred_pose* predicted_eye, pred_viewcell_miss why, bool render, bool whole, char* err,
+                    size_t err_size)
 {
     const tv_pvs_slot* cur = &st->pipe.current;
     size_t pixels = (size_t)st->d->width * st->d->height;
@@ -75,7 +83,8 @@ static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_s
         if (!rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, NULL, 0, &full_st) ||
             !rnd_target_read_color(st->s.ctx, st->target, st->rgba_full) ||
             !rnd_target_read_ids(st->s.ctx, st->target, st->ids_full) ||
-            !rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, cur->r.ids, cur->r.count, &pvs_st) ||
+            !rnd_draw(st->s.ctx, st->target, st->s.gpu, &cam, whole ? NULL : cur->r.ids, whole ? 0 : cur->r.count,
+                      &pvs_st) ||
             !rnd_target_read_color(st->s.ctx, st->target, st->rgba_pvs)) {
             snprintf(err, err_size, "rendering frame %llu failed (Vulkan error logged)", (unsigned long long)frame);
             return false;
@@ -97,23 +106,25 @@ static bool log_eye(replay_state* st, uint64_t frame, double t_frame, double t_s
         .pvs_age_ms = (t_submit - cur->r.t_request) * 1e3,
         .inside = why == PRED_VC_COVERED,
         .miss_reason = miss_token(why),
-        .pvs_tris = cur->r.count,
-        .pvs_fraction = st->s.scene.triangle_count ? (double)cur->r.count / st->s.scene.triangle_count : 0.0,
+        .pvs_tris = whole ? st->s.scene.triangle_count : cur->r.count,
+        .pvs_fraction = whole ? 1.0 : pvs_fraction(st),
         .pvs_compute_ms = cur->r.compute_ms,
         .rendered = render,
         .pvs_frusta = cur->r.vc.frusta,
+        .whole_scene = whole,
     };
     if (render) {
         row.psnr_db = rnd_psnr_rgb8(st->rgba_full, st->rgba_pvs, pixels, 4);
-        row.fn_pixels = rnd_count_fn_pixels(st->ids_full, pixels, cur->mask, st->s.scene.triangle_count);
+        row.fn_pixels = whole ? 0 : rnd_count_fn_pixels(st->ids_full, pixels, cur->mask, st->s.scene.triangle_count);
         row.diff_pixels = rnd_count_diff_pixels(st->rgba_full, st->rgba_pvs, pixels, 4, 0);
         /* GPU time where the device has timestamps: on a single-queue device
          * the wall clock would include waiting behind the PVS worker's work */
         row.render_pvs_ms = pvs_st.gpu_ms >= 0.0 ? pvs_st.gpu_ms : pvs_st.cpu_ms;
         row.render_full_ms = full_st.gpu_ms >= 0.0 ? full_st.gpu_ms : full_st.cpu_ms;
         row.ssim = rnd_ssim_rgb8(st->rgba_full, st->rgba_pvs, st->d->width, st->d->height, 4, st->ssim_scratch);
-        tv_worst_frame_offer(&st->worst, row.psnr_db, frame, e, st->rgba_full, st->rgba_pvs, st->ids_full, cur->mask,
-                             st->s.scene.triangle_count);
+        if (!whole)
+            tv_worst_frame_offer(&st->worst, row.psnr_db, frame, e, st->rgba_full, st->rgba_pvs, st->ids_full,
+                                 cur->mask, st->s.scene.triangle_count);
     }
     if (!tv_replay_log_row(st->log, &row)) {
         snprintf(err, err_size, "%s/frames.csv: write failed", st->d->out_dir);
@@ -165,19 +176,20 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
                                  pred_quat_angle_deg(head.q, predicted_head.q));
         /* coverage is cheap geometry: every display frame, whatever --every says */
         pred_pose eyes[2], predicted_eyes[2];
-        pred_viewcell_miss why[2];
+        pred_viewcell_miss why[2] = {PRED_VC_COVERED, PRED_VC_COVERED};
         hmd_eye_poses(&st->sim, &head, eyes);
-        bool covered = true;
-        for (int e = 0; e < 2; e++)
-            covered &= pred_viewcell_contains(&st->pipe.current.r.vc, eyes[e].p, eyes[e].q,
-                                              d->viewcell.display_fov_h_deg, st->eye_fov_v, &why[e]);
-        tv_replay_log_coverage(st->log, covered);
-        bool render = k % (uint64_t)d->every == 0;
+        const pred_viewcell* vc = &st->pipe.current.r.vc;
+        bool whole = tv_pvs_pipeline_whole_scene(&st->pipe, t_submit), covered = true;
+        for (int e = 0; e < 2 && !whole; e++)
+            covered &= pred_viewcell_contains(vc, eyes[e].p, eyes[e].q, d->viewcell.display_fov_h_deg,
+                                              st->eye_fov_v, &why[e]);
+        tv_replay_log_coverage(st->log, covered, whole, whole ? 1.0 : pvs_fraction(st), vc->delta, vc->fov_pvs_deg);
+        bool render = !d->coverage_only && k % (uint64_t)d->every == 0;
         if (render || !covered) {
             hmd_eye_poses(&st->sim, &predicted_head, predicted_eyes);
             for (int e = 0; e < 2; e++)
-                if (!log_eye(st, k, t_frame, t_submit, e, &eyes[e], &predicted_eyes[e], why[e], render, err,
-                             err_size))
+                if (!log_eye(st, k, t_frame, t_submit, e, &eyes[e], &predicted_eyes[e], why[e], render, whole,
+                             err, err_size))
                     return false;
         }
         progress(st, k, frames, wall0);
@@ -193,7 +205,7 @@ static bool setup(replay_state* st, char* err, size_t err_size)
     st->eye_fov_v = rnd_fov_y_from_x(d->viewcell.display_fov_h_deg, (float)d->width / (float)d->height);
     tv_pvs_pipeline_desc pd = {.method = d->method, .predictor = d->predictor, .viewcell = d->viewcell,
                                .latency_model = d->latency_model, .latency_s = d->latency_s,
-                               .latency_factor = d->latency_factor};
+                               .latency_factor = d->latency_factor, .no_pvs = d->coverage_only};
     if (!tv_pvs_pipeline_start(&st->pipe, &pd, st->s.ctx, &st->s.scene, st->s.gpu, err, err_size))
         return false;
     st->target = rnd_target_create(st->s.ctx, d->width, d->height, err, err_size);

@@ -37,6 +37,8 @@ typedef struct tv_replay_desc {
     bool no_late_latch;      /* latch the pose at frame start instead of at submit */
     bool progress;           /* progress bar on stderr */
     bool plots;              /* write PNG plots with gnuplot */
+    bool coverage_only;      /* no PVS computed, no frame rendered: sizing and coverage only
+                                (fixed latency model; tv_pvs_pipeline_desc.no_pvs) */
 } tv_replay_desc;
 
 /* Runs the replay and writes DIR/frames.csv, DIR/summary.json, plots and the

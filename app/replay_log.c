@@ -31,7 +31,7 @@ struct tv_replay_log {
     FILE* csv;
     char csv_name[4200];
     series psnr, ssim, fn, pvs_fraction, delta, fov, render_full, render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
-    uint64_t rows, misses, identical, coverage_frames, omni_pvs, clamped_pvs;
+    uint64_t rows, misses, identical, coverage_frames, omni_pvs, clamped_pvs, whole_scene_frames, whole_scene_pvs;
     double sum_mse;
 };
 
@@ -39,7 +39,7 @@ static const char* k_header =
     "frame,t,eye,px,py,pz,qx,qy,qz,qw,pose_age_ms,"
     "pred_px,pred_py,pred_pz,pred_qx,pred_qy,pred_qz,pred_qw,pred_err_pos_m,pred_err_rot_deg,pred_horizon_ms,"
     "delta_m,fov_pvs_deg,pvs_id,pvs_age_ms,inside_viewcell,miss_reason,pvs_tris,pvs_fraction,"
-    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,ssim,rendered,pvs_frusta\n";
+    "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,ssim,rendered,pvs_frusta,whole_scene\n";
 
 tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size)
 {
@@ -75,12 +75,13 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
                     "%llu,%.6f,%s,%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.3f,"
                     "%.6f,%.6f,%.6f,%.7f,%.7f,%.7f,%.7f,%.6f,%.4f,%.3f,"
                     "%.4f,%.3f,%u,%.3f,%d,%s,%u,%.6f,"
-                    "%s,%.3f,%s,%d,%d\n",
+                    "%s,%.3f,%s,%d,%d,%d\n",
                     (unsigned long long)r->frame, r->t, r->eye == 0 ? "left" : "right", p->p[0], p->p[1], p->p[2],
                     p->q[0], p->q[1], p->q[2], p->q[3], r->pose_age_ms, q->p[0], q->p[1], q->p[2], q->q[0], q->q[1],
                     q->q[2], q->q[3], r->pred_err_pos_m, r->pred_err_rot_deg, r->pred_horizon_ms, r->delta_m,
                     r->fov_pvs_deg, r->pvs_id, r->pvs_age_ms, r->inside ? 1 : 0, r->miss_reason, r->pvs_tris,
-                    r->pvs_fraction, image, r->pvs_compute_ms, render, r->rendered ? 1 : 0, r->pvs_frusta);
+                    r->pvs_fraction, image, r->pvs_compute_ms, render, r->rendered ? 1 : 0, r->pvs_frusta,
+                    r->whole_scene ? 1 : 0);
     /* flushing every row is what lets an interrupted replay keep its log */
     if (n < 0 || fflush(log->csv) != 0)
         return false;
@@ -94,19 +95,29 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* r)
     if (!isnan(r->ssim) && !series_push(&log->ssim, r->ssim))
         return false;
     return series_push(&log->psnr, r->psnr_db) && series_push(&log->fn, (double)r->fn_pixels) &&
-           series_push(&log->pvs_fraction, r->pvs_fraction) && series_push(&log->delta, r->delta_m) &&
-           series_push(&log->fov, r->fov_pvs_deg) && series_push(&log->render_full, r->render_full_ms) &&
+           series_push(&log->render_full, r->render_full_ms) &&
            series_push(&log->render_pvs, r->render_pvs_ms) && series_push(&log->pose_age, r->pose_age_ms);
 }
 
-void tv_replay_log_coverage(tv_replay_log* log, bool covered)
+void tv_replay_log_coverage(tv_replay_log* log, bool covered, bool whole_scene, double pvs_fraction, double delta_m,
+                            double fov_pvs_deg)
 {
     log->coverage_frames++;
     log->misses += !covered;
+    log->whole_scene_frames += whole_scene;
+    series_push(&log->pvs_fraction, pvs_fraction);
+    if (!whole_scene) {
+        series_push(&log->delta, delta_m);
+        series_push(&log->fov, fov_pvs_deg);
+    }
 }
 
-void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta, bool clamped)
+void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta, bool clamped, bool whole_scene)
 {
+    if (whole_scene) {
+        log->whole_scene_pvs++;
+        return;
+    }
     series_push(&log->pvs_ms, compute_ms);
     log->omni_pvs += frusta > 1;
     log->clamped_pvs += clamped;
@@ -181,6 +192,8 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(f, "  \"pvs_count\": %zu,\n", log->pvs_ms.n);
         fprintf(f, "  \"omni_pvs_count\": %llu,\n", (unsigned long long)log->omni_pvs);
         fprintf(f, "  \"clamped_pvs_count\": %llu,\n", (unsigned long long)log->clamped_pvs);
+        fprintf(f, "  \"whole_scene_pvs_count\": %llu,\n", (unsigned long long)log->whole_scene_pvs);
+        fprintf(f, "  \"whole_scene_frames\": %llu,\n", (unsigned long long)log->whole_scene_frames);
         const struct {
             const char* key;
             double v;
@@ -218,6 +231,8 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(table, " FN pixels mean / max  %8.2f / %.0f\n", sm.fn_mean, sm.fn_max);
         fprintf(table, " viewcell misses       %8llu of %llu display frames (every frame checked)\n",
                 (unsigned long long)log->misses, (unsigned long long)log->coverage_frames);
+        fprintf(table, " whole scene drawn     %8llu display frames (%llu whole-scene PVSs)\n",
+                (unsigned long long)log->whole_scene_frames, (unsigned long long)log->whole_scene_pvs);
         fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);
         fprintf(table, " delta / PVS FOV       %8.3f m / %.1f deg (means)\n", sm.delta, sm.fov);
         fprintf(table, " PVS compute           %8.1f ms mean over %zu PVSs (%llu over all directions, %llu clamped)\n",

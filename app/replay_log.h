@@ -36,6 +36,7 @@ typedef struct tv_frame_row {
     double ssim;             /* mean SSIM, PVS render against full render (eval/ssim.h); NaN: image under 11 px */
     bool rendered;           /* false: a coverage-only row, the image columns (and ssim) are empty */
     int pvs_frusta;          /* frusta of the PVS's viewcell (1, or 6 for every direction) */
+    bool whole_scene;        /* drawn with every triangle (tv_pvs_pipeline_whole_scene) */
 } tv_frame_row;
 
 typedef struct tv_replay_log tv_replay_log;
@@ -47,11 +48,16 @@ tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size);
  * only). False on a write error. */
 bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* row);
 
-/* Per display frame: whether both eyes were covered by the viewcell. */
-void tv_replay_log_coverage(tv_replay_log* log, bool covered);
+/* Per display frame: whether both eyes were covered by the viewcell (or
+ * the frame drew the whole scene), and what it drew with: the PVS's share
+ * of the scene (1 for the whole scene) and, when drawn from a computed PVS,
+ * its viewcell's delta and FOV (the summary's means are over display frames). */
+void tv_replay_log_coverage(tv_replay_log* log, bool covered, bool whole_scene, double pvs_fraction, double delta_m,
+                            double fov_pvs_deg);
 
-/* Per-PVS accounting (once per delivered PVS). */
-void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta, bool clamped);
+/* Per-PVS accounting (once per delivered PVS; a whole-scene one is only
+ * counted, its listing time is no PVS compute time). */
+void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta, bool clamped, bool whole_scene);
 
 /* Per display frame (not only evaluated ones): prediction error of the head
  * at the frame time relative to the PVS request's prediction, for the p99s. */

@@ -44,7 +44,12 @@ static bool string(reader* r, char** out)
 {
     if (!eat(r, '"'))
         return fail(r, "expected a string");
-    char* buf = malloc(r->len - r->pos + 1);
+    /* The decoded string is never longer than its raw span: size the buffer by
+     * the span, not by the rest of the file (documents hold many strings). */
+    size_t end = r->pos;
+    while (end < r->len && r->s[end] != '"')
+        end += r->s[end] == '\\' ? 2 : 1;
+    char* buf = malloc((end < r->len ? end : r->len) - r->pos + 1);
     size_t n = 0;
     while (buf && r->pos < r->len && r->s[r->pos] != '"') {
         char c = r->s[r->pos++];
@@ -61,7 +66,10 @@ static bool string(reader* r, char** out)
                 unsigned v;
                 char hex[5] = {0};
                 memcpy(hex, &r->s[r->pos], 4);
-                if (sscanf(hex, "%4x", &v) != 1) {
+                /* Four hex digits exactly: "%4x" alone would accept "12\"4" and run past
+                 * the closing quote the buffer was sized by. */
+                bool hex4 = strspn(hex, "0123456789abcdefABCDEF") == 4;
+                if (!hex4 || sscanf(hex, "%4x", &v) != 1) {
                     free(buf);
                     return fail(r, "bad \\u escape");
                 }

@@ -1,5 +1,5 @@
 /* json_read.h - a small JSON reader: parses a whole document into a tree
- * (bench part files; in base/ so any module may read JSON with it). Numbers are doubles
+ * (bench part files, OpenArena .pvs.json; in base/ so any module may read JSON with it). Numbers are doubles
  * (strtod, so a value written with %.17g reads back bit-exact); strings are
  * UTF-8 with the standard escapes (\uXXXX above ASCII becomes '?'). Nesting
  * is limited to 64 levels. Vulkan-free. */

@@ -1,6 +1,7 @@
 #include "ground_truth.h"
 
 #include "clock.h"
+#include "gt_seethrough.h"
 #include "image_compare.h"
 #include "ssim.h"
 #include "stats.h"
@@ -263,9 +264,10 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
     };
     uint8_t* gt = gt_mask ? gt_mask : calloc(scene->triangle_count ? scene->triangle_count : 1, 1);
     rnd_target* target = NULL;
+    gt_seethrough see = {0};
     bool ok = false;
     if (!b.ids || !b.last_view || !b.views || !b.full_rgba || !b.pvs_rgba || !b.unreliable || !b.cams ||
-        !b.full_ms || !b.pvs_ms || !b.ssim_scratch || !gt) {
+        !b.full_ms || !b.pvs_ms || !b.ssim_scratch || !gt || !gt_seethrough_init(&see, scene, pixels)) {
         snprintf(err, err_size, "ground truth: out of memory");
         goto done;
     }
@@ -297,6 +299,12 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
         b.full_ms[s] = full_st.cpu_ms;
         b.pvs_ms[s] = pvs_st.cpu_ms;
         size_t fn = 0, fn_rel = 0;
+        if (see.blend_count &&
+            !gt_seethrough_sample(&see, ctx, target, gpu, &b.cams[s], pixels, pvs_mask, b.unreliable,
+                                  scene->triangle_count, b.ids, gt, &fn, &fn_rel)) {
+            snprintf(err, err_size, "ground truth: the see-through pass of sample view %u failed (Vulkan error logged)", s);
+            goto done;
+        }
         for (size_t px = 0; px < pixels; px++) {
             uint32_t id = b.ids[px];
             if (id >= scene->triangle_count)
@@ -343,6 +351,7 @@ done:
         rnd_target_destroy(ctx, target);
     if (!gt_mask)
         free(gt);
+    gt_seethrough_free(&see);
     free_buffers(&b);
     out->eval_ms = tv_now_ms() - t0;
     return ok;

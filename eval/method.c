@@ -137,12 +137,35 @@ static bool _check_request(const pvs_method* m, const pvs_request* req, char* er
     return true;
 }
 
+/* A whole-scene viewcell (its apex beyond what a PVS resolves): every
+ * triangle, no method call. */
+static bool _whole_scene(const pvs_method* m, uint32_t** ids, uint32_t* count, pvs_method_stats* stats, char* err,
+                         size_t err_size)
+{
+    double t0 = tv_now_ms();
+    uint32_t* list = malloc((m->triangle_count ? m->triangle_count : 1) * sizeof *list);
+    if (!list) {
+        snprintf(err, err_size, "%s: out of memory for the whole scene's %u ids", pvs_method_name(m->kind),
+                 m->triangle_count);
+        return false;
+    }
+    for (uint32_t t = 0; t < m->triangle_count; t++)
+        list[t] = t;
+    *ids = list;
+    *count = m->triangle_count;
+    if (stats)
+        *stats = (pvs_method_stats){.total_ms = tv_now_ms() - t0};
+    return true;
+}
+
 bool pvs_method_compute(pvs_method* m, const pvs_request* in, uint32_t** ids, uint32_t* count,
                         pvs_method_stats* stats, char* err, size_t err_size)
 {
     assert(m && in && ids && count);
     *ids = NULL;
     *count = 0;
+    if (in->vc.whole_scene)
+        return _whole_scene(m, ids, count, stats, err, err_size);
     if (in->vc.frusta > 1)
         return pvs_method_compute_frusta(m, in, ids, count, stats, err, err_size);
     double t0 = tv_now_ms();

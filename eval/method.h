@@ -91,7 +91,8 @@ pvs_method_kind pvs_method_kind_of(const pvs_method* m);
  * without a current pose, a q3vis viewcell in no cluster, or a Vulkan or
  * memory failure. docs/evaluation.md ("Baselines") describes each method.
  * A viewcell of several frusta (req->vc.frusta > 1: every direction) gets
- * the union of the PVSs of its frusta (pvs_method_compute_frusta). */
+ * the union of the PVSs of its frusta (pvs_method_compute_frusta); a
+ * whole-scene one (req->vc.whole_scene) every triangle, stats->frusta 0. */
 bool pvs_method_compute(pvs_method* m, const pvs_request* req, uint32_t** ids, uint32_t* count,
                         pvs_method_stats* stats, char* err, size_t err_size);
 

@@ -45,7 +45,7 @@ typedef struct pvs_q3vis {
 /* Parses `len` bytes of JSON (need not be NUL-terminated) into `out` (zeroed
  * first). `name` is the file name used in error messages. Requires the keys
  * n_clusters, bytes_per_cluster, visdata_b64 and leafs (each leaf an object
- * with cluster, min, max); other keys are skipped. Fails with
+ * with cluster, min, max), each once; other keys are ignored. Fails with
  * "NAME: problem" (byte offset for syntax errors) on malformed JSON, bad
  * base64, a visdata size other than n_clusters * bytes_per_cluster, a leaf
  * cluster outside [-1, n_clusters) or a non-finite or inverted box. */

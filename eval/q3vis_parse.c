@@ -1,8 +1,9 @@
-/* q3vis_parse.c - the .pvs.json reader: a small recursive-descent JSON parser
- * that understands exactly the keys it needs and skips (but still validates)
- * every other value, plus a strict base64 decoder. No DOM is built, so memory
- * use is bounded by the visdata and the leaf array. */
+/* q3vis_parse.c - the .pvs.json reader: base/json_read.h parses the document
+ * (levels' files are at most a few MB), this file checks the keys it needs and
+ * decodes the visdata with a strict base64 decoder. */
 #include "q3vis.h"
+
+#include "json_read.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -10,212 +11,26 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_DEPTH 64             /* nesting limit of skipped values (fuzzed input) */
 #define MAX_CLUSTERS (1u << 20)  /* far above any Quake 3 level (a few thousand) */
 
-typedef struct _parser {
-    const char* s;
-    size_t len, pos;
+typedef struct _ctx {
     const char* name;
     char* err;
     size_t err_size;
-    bool failed;
-} _parser;
+} _ctx;
 
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
-static bool _fail(_parser* p, const char* fmt, ...)
+static bool _fail(const _ctx* c, const char* fmt, ...)
 {
-    if (p->failed)
-        return false; /* keep the first, most specific message */
-    p->failed = true;
     char msg[256];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(p->err, p->err_size, "%s: %s", p->name, msg);
+    snprintf(c->err, c->err_size, "%s: %s", c->name, msg);
     return false;
-}
-
-static bool _syntax(_parser* p, const char* what)
-{
-    if (p->pos >= p->len)
-        return _fail(p, "unexpected end of file, expected %s", what);
-    return _fail(p, "byte %zu: expected %s", p->pos, what);
-}
-
-static void _ws(_parser* p)
-{
-    while (p->pos < p->len &&
-           (p->s[p->pos] == ' ' || p->s[p->pos] == '\t' || p->s[p->pos] == '\n' || p->s[p->pos] == '\r'))
-        p->pos++;
-}
-
-static bool _peek(_parser* p, char c)
-{
-    _ws(p);
-    return p->pos < p->len && p->s[p->pos] == c;
-}
-
-static bool _expect(_parser* p, char c, const char* what)
-{
-    if (!_peek(p, c))
-        return _syntax(p, what);
-    p->pos++;
-    return true;
-}
-
-/* A string's raw span (between the quotes, escapes left in place). */
-static bool _string(_parser* p, const char** start, size_t* n)
-{
-    if (!_expect(p, '"', "a string"))
-        return false;
-    size_t b = p->pos;
-    while (p->pos < p->len && p->s[p->pos] != '"') {
-        unsigned char c = (unsigned char)p->s[p->pos];
-        if (c < 0x20)
-            return _fail(p, "byte %zu: control character in a string", p->pos);
-        if (c == '\\') {
-            p->pos++;
-            if (p->pos >= p->len || !strchr("\"\\/bfnrtu", p->s[p->pos]))
-                return _syntax(p, "an escape character");
-        }
-        p->pos++;
-    }
-    if (p->pos >= p->len)
-        return _syntax(p, "a closing quote");
-    *start = p->s + b;
-    *n = p->pos - b;
-    p->pos++;
-    return true;
-}
-
-static bool _number(_parser* p, double* out)
-{
-    _ws(p);
-    size_t b = p->pos;
-    while (p->pos < p->len && strchr("+-0123456789.eE", p->s[p->pos]) && p->s[p->pos] != '\0')
-        p->pos++;
-    char buf[64];
-    size_t n = p->pos - b;
-    if (n == 0 || n >= sizeof buf) {
-        p->pos = b;
-        return _syntax(p, "a number");
-    }
-    memcpy(buf, p->s + b, n);
-    buf[n] = '\0';
-    char* end;
-    *out = strtod(buf, &end);
-    if (*end != '\0' || !isfinite(*out)) {
-        p->pos = b;
-        return _syntax(p, "a finite number");
-    }
-    return true;
-}
-
-static bool _literal(_parser* p, const char* word)
-{
-    size_t n = strlen(word);
-    if (p->len - p->pos < n || memcmp(p->s + p->pos, word, n) != 0)
-        return _syntax(p, "a value");
-    p->pos += n;
-    return true;
-}
-
-static bool _skip_value(_parser* p, int depth);
-
-/* Calls member(p, key, key_len, user) for each key of an object, with the
- * cursor on the value; member must consume the value. */
-typedef bool (*_member_fn)(_parser* p, const char* key, size_t key_len, void* user);
-
-static bool _object(_parser* p, _member_fn member, void* user)
-{
-    if (!_expect(p, '{', "'{'"))
-        return false;
-    if (_peek(p, '}')) {
-        p->pos++;
-        return true;
-    }
-    for (;;) {
-        const char* key;
-        size_t n;
-        if (!_string(p, &key, &n) || !_expect(p, ':', "':'") || !member(p, key, n, user))
-            return false;
-        if (_peek(p, ',')) {
-            p->pos++;
-            continue;
-        }
-        return _expect(p, '}', "',' or '}'");
-    }
-}
-
-/* Calls element(p, index, user) for each array element, cursor on it. */
-typedef bool (*_element_fn)(_parser* p, uint32_t index, void* user);
-
-static bool _array(_parser* p, _element_fn element, void* user)
-{
-    if (!_expect(p, '[', "'['"))
-        return false;
-    if (_peek(p, ']')) {
-        p->pos++;
-        return true;
-    }
-    for (uint32_t i = 0;; i++) {
-        if (i == UINT32_MAX)
-            return _fail(p, "byte %zu: array too long", p->pos);
-        if (!element(p, i, user))
-            return false;
-        if (_peek(p, ',')) {
-            p->pos++;
-            continue;
-        }
-        return _expect(p, ']', "',' or ']'");
-    }
-}
-
-typedef struct _skip_ctx {
-    int depth;
-} _skip_ctx;
-
-static bool _skip_member(_parser* p, const char* key, size_t n, void* user)
-{
-    (void)key, (void)n;
-    return _skip_value(p, ((_skip_ctx*)user)->depth);
-}
-
-static bool _skip_element(_parser* p, uint32_t i, void* user)
-{
-    (void)i;
-    return _skip_value(p, ((_skip_ctx*)user)->depth);
-}
-
-static bool _skip_value(_parser* p, int depth)
-{
-    if (depth > MAX_DEPTH)
-        return _fail(p, "byte %zu: nesting deeper than %d", p->pos, MAX_DEPTH);
-    _ws(p);
-    if (p->pos >= p->len)
-        return _syntax(p, "a value");
-    _skip_ctx sub = {depth + 1};
-    const char* s;
-    size_t n;
-    double d;
-    switch (p->s[p->pos]) {
-    case '{': return _object(p, _skip_member, &sub);
-    case '[': return _array(p, _skip_element, &sub);
-    case '"': return _string(p, &s, &n);
-    case 't': return _literal(p, "true");
-    case 'f': return _literal(p, "false");
-    case 'n': return _literal(p, "null");
-    default: return _number(p, &d);
-    }
-}
-
-static bool _key_is(const char* key, size_t n, const char* want)
-{
-    return strlen(want) == n && memcmp(key, want, n) == 0;
 }
 
 static int _b64_value(unsigned char c)
@@ -234,7 +49,7 @@ static int _b64_value(unsigned char c)
 }
 
 /* Strict standard base64 with '=' padding. */
-static bool _base64(_parser* p, const char* s, size_t n, uint8_t** out, size_t* out_len)
+static bool _base64(const _ctx* p, const char* s, size_t n, uint8_t** out, size_t* out_len)
 {
     if (n % 4 != 0)
         return _fail(p, "visdata_b64: bad base64 (length %zu is not a multiple of 4)", n);
@@ -263,154 +78,120 @@ static bool _base64(_parser* p, const char* s, size_t n, uint8_t** out, size_t* 
     return true;
 }
 
-typedef struct _doc {
-    pvs_q3vis* vis;
-    double n_clusters, bytes_per_cluster;
-    bool has_n, has_bytes, has_leafs;
-    uint8_t* visdata;
-    size_t visdata_len;
-    uint32_t leaf_cap;
-    /* the leaf being read */
-    pvs_q3vis_leaf leaf;
-    bool has_cluster, has_min, has_max;
-} _doc;
-
-static bool _vec3(_parser* p, float v[3])
+/* The member `key` of object j, failing with "missing key" when absent and
+ * "appears twice" when repeated (the reader keeps both; which one counts
+ * would be arbitrary). */
+static const tv_json* _member(const _ctx* c, const tv_json* j, const char* key, const char* where)
 {
-    if (!_expect(p, '[', "'[' of a 3-vector"))
-        return false;
-    for (int k = 0; k < 3; k++) {
-        double d;
-        if (k > 0 && !_expect(p, ',', "',' in a 3-vector"))
-            return false;
-        if (!_number(p, &d))
-            return false;
-        if (fabs(d) > 1e30)
-            return _fail(p, "byte %zu: coordinate %g out of range", p->pos, d);
-        v[k] = (float)d;
+    const tv_json* found = NULL;
+    for (int i = 0; i < j->count; i++) {
+        if (strcmp(j->keys[i], key) != 0)
+            continue;
+        if (found) {
+            _fail(c, "%s%s appears twice", where, key);
+            return NULL;
+        }
+        found = &j->items[i];
     }
-    return _expect(p, ']', "']' closing a 3-vector");
+    if (!found)
+        _fail(c, "%smissing key %s", where, key);
+    return found;
 }
 
-static bool _leaf_member(_parser* p, const char* key, size_t n, void* user)
+static bool _number(const _ctx* c, const tv_json* j, const char* what, double* out)
 {
-    _doc* d = user;
-    if (_key_is(key, n, "cluster")) {
-        double c;
-        if (!_number(p, &c))
-            return false;
-        if (c != floor(c) || c < -1.0 || c > 2147483647.0)
-            return _fail(p, "byte %zu: leaf cluster %g is not an integer >= -1", p->pos, c);
-        d->leaf.cluster = (int32_t)c;
-        d->has_cluster = true;
-        return true;
-    }
-    if (_key_is(key, n, "min")) {
-        d->has_min = true;
-        return _vec3(p, d->leaf.min);
-    }
-    if (_key_is(key, n, "max")) {
-        d->has_max = true;
-        return _vec3(p, d->leaf.max);
-    }
-    _skip_ctx sub = {2};
-    return _skip_member(p, key, n, &sub);
-}
-
-static bool _leaf(_parser* p, uint32_t i, void* user)
-{
-    _doc* d = user;
-    d->has_cluster = d->has_min = d->has_max = false;
-    if (!_object(p, _leaf_member, d))
-        return false;
-    if (!d->has_cluster || !d->has_min || !d->has_max)
-        return _fail(p, "leaf %u lacks %s", i, !d->has_cluster ? "cluster" : !d->has_min ? "min" : "max");
-    for (int k = 0; k < 3; k++)
-        if (!(d->leaf.min[k] <= d->leaf.max[k]))
-            return _fail(p, "leaf %u: box min exceeds max on axis %d", i, k);
-    pvs_q3vis* vis = d->vis;
-    if (vis->leaf_count == d->leaf_cap) {
-        uint32_t cap = d->leaf_cap ? 2 * d->leaf_cap : 256;
-        pvs_q3vis_leaf* grown = cap > d->leaf_cap ? realloc(vis->leaves, cap * sizeof *grown) : NULL;
-        if (!grown)
-            return _fail(p, "out of memory reading leaf %u", i);
-        vis->leaves = grown;
-        d->leaf_cap = cap;
-    }
-    vis->leaves[vis->leaf_count++] = d->leaf;
+    if (j->type != TV_JSON_NUMBER || !isfinite(j->num))
+        return _fail(c, "%s is not a finite number", what);
+    *out = j->num;
     return true;
 }
 
-static bool _top_member(_parser* p, const char* key, size_t n, void* user)
+static bool _vec3(const _ctx* c, const tv_json* j, uint32_t leaf, const char* key, float v[3])
 {
-    _doc* d = user;
-    if (_key_is(key, n, "n_clusters")) {
-        d->has_n = true;
-        return _number(p, &d->n_clusters);
+    if (j->type != TV_JSON_ARRAY || j->count != 3)
+        return _fail(c, "leaf %u: %s is not a 3-vector", leaf, key);
+    for (int k = 0; k < 3; k++) {
+        double d = 0.0;
+        if (!_number(c, &j->items[k], key, &d))
+            return false;
+        if (fabs(d) > 1e30)
+            return _fail(c, "leaf %u: coordinate %g out of range", leaf, d);
+        v[k] = (float)d;
     }
-    if (_key_is(key, n, "bytes_per_cluster")) {
-        d->has_bytes = true;
-        return _number(p, &d->bytes_per_cluster);
-    }
-    if (_key_is(key, n, "visdata_b64")) {
-        const char* s;
-        size_t len;
-        if (d->visdata)
-            return _fail(p, "visdata_b64 appears twice");
-        return _string(p, &s, &len) && _base64(p, s, len, &d->visdata, &d->visdata_len);
-    }
-    if (_key_is(key, n, "leafs")) {
-        if (d->has_leafs)
-            return _fail(p, "leafs appears twice");
-        d->has_leafs = true;
-        return _array(p, _leaf, d);
-    }
-    _skip_ctx sub = {1};
-    return _skip_member(p, key, n, &sub);
+    return true;
 }
 
-/* Cross-field checks once the whole document is read. */
-static bool _validate(_parser* p, _doc* d)
+static bool _leaf(const _ctx* c, const tv_json* j, uint32_t i, uint32_t n_clusters, pvs_q3vis_leaf* out)
 {
-    if (!d->has_n || !d->has_bytes || !d->visdata || !d->has_leafs)
-        return _fail(p, "missing key %s",
-                     !d->has_n ? "n_clusters" : !d->has_bytes ? "bytes_per_cluster" : !d->visdata ? "visdata_b64"
-                                                                                                 : "leafs");
-    double nc = d->n_clusters, bpc = d->bytes_per_cluster;
+    char where[32];
+    snprintf(where, sizeof where, "leaf %u: ", i);
+    if (j->type != TV_JSON_OBJECT)
+        return _fail(c, "leaf %u is not an object", i);
+    const tv_json* cl = _member(c, j, "cluster", where);
+    const tv_json* mn = cl ? _member(c, j, "min", where) : NULL;
+    const tv_json* mx = mn ? _member(c, j, "max", where) : NULL;
+    double cluster = 0.0;
+    if (!mx || !_number(c, cl, "cluster", &cluster) || !_vec3(c, mn, i, "min", out->min) ||
+        !_vec3(c, mx, i, "max", out->max))
+        return false;
+    if (cluster != floor(cluster) || cluster < -1.0 || cluster >= (double)n_clusters)
+        return _fail(c, "leaf %u: cluster %g outside [-1, %u)", i, cluster, n_clusters);
+    out->cluster = (int32_t)cluster;
+    for (int k = 0; k < 3; k++)
+        if (!(out->min[k] <= out->max[k]))
+            return _fail(c, "leaf %u: box min exceeds max on axis %d", i, k);
+    return true;
+}
+
+static bool _document(const _ctx* c, const tv_json* doc, pvs_q3vis* vis)
+{
+    if (doc->type != TV_JSON_OBJECT)
+        return _fail(c, "the document is not an object");
+    const tv_json* n = _member(c, doc, "n_clusters", "");
+    const tv_json* b = n ? _member(c, doc, "bytes_per_cluster", "") : NULL;
+    const tv_json* data = b ? _member(c, doc, "visdata_b64", "") : NULL;
+    const tv_json* leafs = data ? _member(c, doc, "leafs", "") : NULL;
+    double nc = 0.0, bpc = 0.0;
+    if (!leafs || !_number(c, n, "n_clusters", &nc) || !_number(c, b, "bytes_per_cluster", &bpc))
+        return false;
     if (nc != floor(nc) || nc < 1 || nc > MAX_CLUSTERS)
-        return _fail(p, "n_clusters %g is not an integer in [1, %u]", nc, MAX_CLUSTERS);
+        return _fail(c, "n_clusters %g is not an integer in [1, %u]", nc, MAX_CLUSTERS);
     if (bpc != floor(bpc) || bpc < ceil(nc / 8.0) || bpc > MAX_CLUSTERS)
-        return _fail(p, "bytes_per_cluster %g cannot hold %g clusters", bpc, nc);
-    pvs_q3vis* vis = d->vis;
+        return _fail(c, "bytes_per_cluster %g cannot hold %g clusters", bpc, nc);
     vis->n_clusters = (uint32_t)nc;
     vis->bytes_per_cluster = (uint32_t)bpc;
+    if (data->type != TV_JSON_STRING)
+        return _fail(c, "visdata_b64 is not a string");
+    size_t len = 0;
+    if (!_base64(c, data->str, strlen(data->str), &vis->visdata, &len))
+        return false;
     size_t want = (size_t)vis->n_clusters * vis->bytes_per_cluster;
-    if (d->visdata_len != want)
-        return _fail(p, "visdata has %zu bytes, expected n_clusters * bytes_per_cluster = %zu", d->visdata_len,
-                     want);
-    if (vis->leaf_count == 0)
-        return _fail(p, "leafs is empty");
-    for (uint32_t i = 0; i < vis->leaf_count; i++)
-        if (vis->leaves[i].cluster >= (int32_t)vis->n_clusters)
-            return _fail(p, "leaf %u: cluster %d outside [-1, %u)", i, vis->leaves[i].cluster, vis->n_clusters);
-    vis->visdata = d->visdata;
-    d->visdata = NULL;
+    if (len != want)
+        return _fail(c, "visdata has %zu bytes, expected n_clusters * bytes_per_cluster = %zu", len, want);
+    if (leafs->type != TV_JSON_ARRAY)
+        return _fail(c, "leafs is not an array");
+    if (leafs->count == 0)
+        return _fail(c, "leafs is empty");
+    vis->leaves = malloc((size_t)leafs->count * sizeof *vis->leaves);
+    if (!vis->leaves)
+        return _fail(c, "out of memory reading %d leaves", leafs->count);
+    for (; vis->leaf_count < (uint32_t)leafs->count; vis->leaf_count++)
+        if (!_leaf(c, &leafs->items[vis->leaf_count], vis->leaf_count, vis->n_clusters,
+                   &vis->leaves[vis->leaf_count]))
+            return false;
     return true;
 }
 
 bool pvs_q3vis_parse(const char* text, size_t len, const char* name, pvs_q3vis* out, char* err, size_t err_size)
 {
     memset(out, 0, sizeof *out);
-    _parser p = {.s = text, .len = text ? len : 0, .name = name ? name : "q3vis", .err = err,
-                 .err_size = err_size};
-    _doc d = {.vis = out};
-    bool ok = _object(&p, _top_member, &d) && _validate(&p, &d);
+    _ctx c = {.name = name ? name : "q3vis", .err = err, .err_size = err_size};
+    tv_json doc;
+    bool ok = tv_json_parse(text ? text : "", text ? len : 0, c.name, &doc, err, err_size);
     if (ok) {
-        _ws(&p);
-        if (p.pos != p.len)
-            ok = _fail(&p, "byte %zu: trailing characters after the top-level object", p.pos);
+        ok = _document(&c, &doc, out);
+        tv_json_free(&doc);
     }
-    free(d.visdata);
     if (!ok)
         pvs_q3vis_free(out);
     return ok;

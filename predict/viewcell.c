@@ -27,7 +27,7 @@ static pred_viewcell_desc _resolve(const pred_viewcell_desc* in)
     d.fixed_fov_pvs_deg = _fdef(d.fixed_fov_pvs_deg, 90.0f);
     d.quantile = _fdef(d.quantile, 0.99f);
     d.min_delta_m = _fdef(d.min_delta_m, 0.02f);
-    d.max_delta_m = _fdef(d.max_delta_m, 0.5f);
+    d.max_delta_m = _fdef(d.max_delta_m, 5.0f);
     d.min_fov_pvs_deg = _fdef(d.min_fov_pvs_deg, fmaxf(d.display_fov_h_deg, d.display_fov_v_deg));
     d.max_fov_pvs_deg = _fdef(d.max_fov_pvs_deg, 150.0f);
     d.warmup_records = d.warmup_records ? d.warmup_records : 50;
@@ -127,10 +127,9 @@ void pred_viewcell_from_poses(const pred_viewcell_desc* desc_in, const pred_pose
                 need = fmax(need, omni ? sqrt(a * a + r2) / cos(alpha) : fabs(a) * tan(alpha) + sqrt(r2));
             }
         }
-        delta = need + pos_err_m / cos(alpha) + k_delta_margin_m;
-        if (delta > d.max_delta_m)
-            out->clamped = true;
-        delta = fmin(fmax(delta, d.min_delta_m), d.max_delta_m);
+        delta = fmax(need + pos_err_m / cos(alpha) + k_delta_margin_m, d.min_delta_m);
+        out->whole_scene =
+            delta > d.max_delta_m || (d.max_apex_offset_m > 0.0f && delta / tan(alpha) > d.max_apex_offset_m);
     }
     double z = delta / tan(alpha), apex[3];
     for (int k = 0; k < 3; k++)
@@ -290,6 +289,11 @@ bool pred_viewcell_contains(const pred_viewcell* vc, const double eye_p[3], cons
 {
     double f[3], u[3], r[3];
     pred_viewcell_miss miss = PRED_VC_COVERED;
+    if (vc->whole_scene) {
+        if (why)
+            *why = miss;
+        return true;
+    }
     if (vc->frusta > 1) {
         for (int i = 0; i < vc->frusta && !miss; i++) {
             pred_viewcell face;

@@ -50,7 +50,15 @@ typedef struct pred_viewcell_desc {
     float fixed_fov_pvs_deg; /* FIXED: 90 */
     float quantile;          /* ADAPTIVE: 0.99 of the tracked errors */
     float min_delta_m;       /* ADAPTIVE: 0.02 m */
-    float max_delta_m;       /* ADAPTIVE: 0.5 m */
+    /* ADAPTIVE: the largest cell a PVS is computed for. A sizing that needs a
+     * larger delta, or an apex (z = delta / tan alpha behind v0) farther than
+     * max_apex_offset_m, gives the whole scene as the PVS instead of a smaller
+     * cell (whole_scene): a slow PVS costs size, never holes.
+     * max_delta_m 0: 5 m (the largest delta at which tr was measured
+     * conservative, docs/prediction.md); max_apex_offset_m 0: no limit (the
+     * replay sets pvs_max_apex_offset, the PVS depth buffer's limit). */
+    float max_delta_m;
+    float max_apex_offset_m;
     float min_fov_pvs_deg;   /* ADAPTIVE: the larger display angle */
     float max_fov_pvs_deg;   /* ADAPTIVE: 150 */
     /* ADAPTIVE warm-up: until the tracker holds warmup_records errors at the
@@ -93,8 +101,11 @@ typedef struct pred_viewcell {
     float rot_phys_deg;
     int frusta;           /* 1: the frustum above; PRED_VC_OMNI_FRUSTA: every direction (delta,
                              z, apex, fov_pvs_deg are then frustum 0's, the one about forward) */
-    bool clamped;         /* ADAPTIVE: a min/max limit overrode the sizing (with frusta == 1: the
-                             rotation needed more than max_fov_pvs and single_frustum was set) */
+    bool clamped;         /* ADAPTIVE: the rotation needed more than max_fov_pvs and single_frustum
+                             was set: the FOV was clamped (not conservative) */
+    bool whole_scene;     /* ADAPTIVE: the sized apex lies beyond max_apex_offset: the PVS is every
+                             triangle (delta, z, apex are the sizing's, for the logs) and every
+                             eye is covered */
 } pred_viewcell;
 
 typedef enum pred_viewcell_miss {
@@ -141,7 +152,8 @@ void pred_viewcell_frustum(const pred_viewcell* vc, int i, pred_viewcell* out);
  * and its display FOV (full angles, degrees). `why` (may be NULL) receives
  * the first failed condition. An omni viewcell covers an eye inside every
  * one of its double cones, whatever the eye's orientation: every ray from
- * there lies in one of the faces' frusta. */
+ * there lies in one of the faces' frusta. A whole-scene viewcell covers
+ * every eye. */
 bool pred_viewcell_contains(const pred_viewcell* vc, const double eye_p[3], const double eye_q[4],
                             float eye_fov_h_deg, float eye_fov_v_deg, pred_viewcell_miss* why);
 

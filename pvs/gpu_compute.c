@@ -19,6 +19,8 @@
 
 float pvs_max_apex_offset(float near_m)
 {
+    if (!(near_m > 0.0f))
+        near_m = PVS_DEFAULT_NEAR;
     return sqrtf(PVS_MAX_DEPTH_STEP_M * near_m * 16777216.0f); /* step = 2^-24 z^2 / near */
 }
 
@@ -380,6 +382,23 @@ static void read_timestamps(pvs_context* ctx, pvs_stats* st)
     free(t);
 }
 
+/* A proxy is output when it is always or one of its faces was flagged:
+ * its ids are flagged here, so that compact() sorts and dedups them. */
+static uint32_t flag_proxies(pvs_context* ctx, const pvs_proxy* proxies, uint32_t count)
+{
+    uint32_t* flags = ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped;
+    uint32_t output = 0;
+    for (uint32_t p = 0; p < count; p++) {
+        bool seen = ctx->proxy_always[p];
+        for (uint32_t f = 0; f < 12 && !seen; f++)
+            seen = flags[ctx->triangle_count + 12 * p + f] != 0;
+        for (uint32_t i = 0; seen && i < proxies[p].id_count; i++)
+            flags[proxies[p].first_id + i] = 1;
+        output += seen;
+    }
+    return output;
+}
+
 static bool compact(pvs_context* ctx, pvs_result* out, char* err, size_t err_size)
 {
     const uint32_t* flags = ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped;
@@ -437,22 +456,80 @@ static void collect_stats(pvs_context* ctx, pvs_stats* st)
         st->kbuffer_bytes += ctx->buffers[b].size;
 }
 
+static bool check_proxies(const pvs_context* ctx, const pvs_proxy* proxies, uint32_t count, char* err,
+                          size_t err_size)
+{
+    if (count > ctx->max_proxies) {
+        snprintf(err, err_size, "pvs_compute: %u proxies, over pvs_desc.max_proxies %u", count, ctx->max_proxies);
+        return false;
+    }
+    for (uint32_t p = 0; p < count; p++) {
+        const pvs_proxy* x = &proxies[p];
+        for (int i = 0; i < 3; i++) {
+            if (!isfinite(x->box_min[i]) || !isfinite(x->box_max[i]) || x->box_min[i] > x->box_max[i]) {
+                snprintf(err, err_size, "pvs_compute: proxy %u: box axis %d [%g, %g] is not a finite range", p, i,
+                         x->box_min[i], x->box_max[i]);
+                return false;
+            }
+        }
+        if ((uint64_t)x->first_id + x->id_count > ctx->triangle_count) {
+            snprintf(err, err_size, "pvs_compute: proxy %u: ids %u + %u leave the scene's %u triangles", p,
+                     x->first_id, x->id_count, ctx->triangle_count);
+            return false;
+        }
+    }
+    return true;
+}
+
+/* The proxies' boxes into their GPU buffer, then sorted into the octree's
+ * leaves; returns the tree to build the layers from (NULL: out of memory).
+ * Whatever meets the sphere around v0 holding the viewcell and the part of
+ * the PVS frustum before its near plane is output outright. */
+static const pvs_octree* sort_proxies(pvs_context* ctx, const pvs_viewcell* vc, const pvs_view* view,
+                                      const pvs_proxy* proxies, uint32_t count)
+{
+    float* boxes = ctx->buffers[TV_PVS_BIND_PROXIES].mapped;
+    for (uint32_t p = 0; p < count; p++) {
+        float* b = boxes + PVS_PROXY_FLOATS * p;
+        memcpy(b, proxies[p].box_min, 3 * sizeof(float));
+        memcpy(b + 4, proxies[p].box_max, 3 * sizeof(float));
+        b[3] = b[7] = 0.0f;
+    }
+    pvs_view_frame fr = pvs_view_frame_make(view);
+    float z = apex_offset(vc);
+    float radius = (z > vc->delta ? z : vc->delta) +
+                   ctx->near_m * sqrtf(1.0f + fr.tan_half_x * fr.tan_half_x + fr.tan_half_y * fr.tan_half_y);
+    return pvs_proxies_sort(&ctx->proxy_sort, &ctx->octree, boxes, count, ctx->triangle_count, vc->v0, radius,
+                            ctx->proxy_always);
+}
+
 bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char* err, size_t err_size)
 {
-    assert(ctx && vc && out);
+    return pvs_compute_dynamic(ctx, vc, NULL, 0, out, err, err_size);
+}
+
+bool pvs_compute_dynamic(pvs_context* ctx, const pvs_viewcell* vc, const pvs_proxy* proxies, uint32_t proxy_count,
+                         pvs_result* out, char* err, size_t err_size)
+{
+    assert(ctx && vc && out && (proxies || proxy_count == 0));
     const double start = tv_now_ms();
     const char* invalid = pvs_viewcell_invalid(vc);
     if (invalid) {
         snprintf(err, err_size, "pvs_compute: invalid viewcell: %s", invalid);
         return false;
     }
-    if (!check_apex_offset(ctx, vc, err, err_size))
+    if (!check_apex_offset(ctx, vc, err, err_size) || !check_proxies(ctx, proxies, proxy_count, err, err_size))
         return false;
     *out = (pvs_result){0};
     pvs_stats* st = &out->stats;
     rnd_camera cam = pvs_apex_camera(ctx, vc);
     pvs_view view = layer_view(ctx, vc, &cam);
-    if (!pvs_layers_build(&ctx->octree, &view, ctx->max_layers, &ctx->layers, err, err_size))
+    const pvs_octree* tree = sort_proxies(ctx, vc, &view, proxies, proxy_count);
+    if (!tree) {
+        snprintf(err, err_size, "pvs_compute: out of memory sorting %u proxies", proxy_count);
+        return false;
+    }
+    if (!pvs_layers_build(tree, &view, ctx->max_layers, &ctx->layers, err, err_size))
         return false;
     const pvs_layers* L = &ctx->layers;
     uint32_t widest = 0;
@@ -480,6 +557,9 @@ bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char
         st->ms[2] = tv_now_ms() - gpu_start;
 
     const double p4 = tv_now_ms();
+    st->proxies = proxy_count;
+    st->proxies_always = ctx->proxy_sort.always_count;
+    st->proxies_output = flag_proxies(ctx, proxies, proxy_count);
     if (!compact(ctx, out, err, err_size))
         return false;
     collect_stats(ctx, st);

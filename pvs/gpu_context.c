@@ -10,6 +10,7 @@
 #include <assert.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define PVS_DEFAULT_WIDTH 512u
 #define PVS_DEFAULT_HEIGHT 512u
@@ -17,7 +18,7 @@
 /* The default resolution in one tile: larger images are tiled, and the
  * per-pixel memory stays what 512 x 512 needs (k-buffers 128 MiB at k = 16). */
 #define PVS_DEFAULT_TILE_PIXELS (512u * 512u)
-#define PVS_DEFAULT_NEAR 0.01f
+#define PVS_DEFAULT_MAX_PROXIES 1024u
 /* The paper's N. On a CPU device (lavapipe) the cooperative pass only
  * costs: a workgroup resolves one pixel where a SIMD batch of the per-thread
  * pass resolves eight (Sponza, 90k of 481k resolves deferred: P3 640 ->
@@ -30,7 +31,7 @@ static const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | V
 static bool host_visible(uint32_t binding)
 {
     return binding == TV_PVS_BIND_VIEW || binding == TV_PVS_BIND_LAYER_TRIS || binding == TV_PVS_BIND_COUNTERS ||
-           binding == TV_PVS_BIND_TRI_FLAGS || binding == TV_PVS_BIND_LAYER_STATS;
+           binding == TV_PVS_BIND_TRI_FLAGS || binding == TV_PVS_BIND_LAYER_STATS || binding == TV_PVS_BIND_PROXIES;
 }
 
 static bool create_buffer(pvs_context* ctx, uint32_t binding, VkDeviceSize size, char* err, size_t err_size)
@@ -109,13 +110,14 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
     const VkDeviceSize pixels = (VkDeviceSize)ctx->grid.tile_width * ctx->grid.tile_height;
     const VkDeviceSize slots = pixels * ctx->k;
     const VkDeviceSize tris = ctx->triangle_count ? ctx->triangle_count : 1;
+    const VkDeviceSize drawn = tris + 12 * (VkDeviceSize)ctx->max_proxies; /* proxy faces follow the scene's */
     struct {
         uint32_t binding;
         VkDeviceSize size;
     } fixed[] = {
         {TV_PVS_BIND_VIEW, sizeof(pvs_view_gpu)},
         {TV_PVS_BIND_ADJ, tris * 12},
-        {TV_PVS_BIND_LAYER_TRIS, tris * 4},
+        {TV_PVS_BIND_LAYER_TRIS, drawn * 4},
         {TV_PVS_BIND_COUNTERS, TV_PVS_C_COUNT * 4},
         {TV_PVS_BIND_KFRONT, slots * 8},
         {TV_PVS_BIND_KBACK, slots * 8},
@@ -126,10 +128,11 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_CARRY, pixels * TV_K_CARRY * 16},
         {TV_PVS_BIND_ACTIVE, pixels * 4},
         {TV_PVS_BIND_ACTIVE_LIST, pixels * 4},
-        {TV_PVS_BIND_TRI_FLAGS, tris * 4},
+        {TV_PVS_BIND_TRI_FLAGS, drawn * 4},
         {TV_PVS_BIND_CENTRE_DEPTH, pixels * 4 * TV_PVS_CENTRE_STRIDE},
         {TV_PVS_BIND_LOST, pixels * TV_PVS_LOST_STRIDE * 4},
         {TV_PVS_BIND_COOP_LIST, pixels * 4},
+        {TV_PVS_BIND_PROXIES, (VkDeviceSize)ctx->max_proxies * PVS_PROXY_FLOATS * 4},
     };
     for (size_t i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
         if (!create_buffer(ctx, fixed[i].binding, fixed[i].size, err, err_size))
@@ -147,23 +150,73 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
 }
 
 /* Crack edges become TV_ADJ_CRACK in the GPU's copy of the adjacency. */
-static bool mark_cracks(const scn_scene* scene, uint32_t* adjacency, char* err, size_t err_size)
+static bool mark_cracks(const scn_scene* scene, const uint32_t* indices, uint32_t count, uint32_t* adjacency,
+                        char* err, size_t err_size)
 {
-    uint8_t* crack = malloc(3 * (size_t)scene->triangle_count);
+    uint8_t* crack = malloc(3 * (size_t)count);
     if (!crack) {
         snprintf(err, err_size, "pvs: out of memory for the cracks of %s", scene->name);
         return false;
     }
     double t0 = tv_now_ms();
-    size_t n = scn_mark_cracks(crack, adjacency, scene->indices, scene->triangle_count, scene->positions,
-                               TV_PVS_CRACK_GAP_M);
-    for (size_t i = 0; i < 3 * (size_t)scene->triangle_count; i++)
+    size_t n = scn_mark_cracks(crack, adjacency, indices, count, scene->positions, TV_PVS_CRACK_GAP_M);
+    for (size_t i = 0; i < 3 * (size_t)count; i++)
         if (crack[i])
             adjacency[i] = TV_ADJ_CRACK;
     tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges run along another across a crack (%.0f ms)", scene->name, n,
            tv_now_ms() - t0);
     free(crack);
     return true;
+}
+
+/* Whether triangle t can occlude: static and opaque. Moving and
+ * SCN_ALPHA_BLEND triangles are see-through (pvs_geometry.glsl). */
+static bool occluder(const scn_scene* scene, uint32_t t)
+{
+    return t < scene->triangle_count - scene->dynamic_triangle_count &&
+           scene->materials[scene->tri_material[t]].alpha_mode != SCN_ALPHA_BLEND;
+}
+
+/* The adjacency among the occluders only, so that an occluder's edge next
+ * to a see-through triangle is a border (a silhouette from everywhere):
+ * built over the occluders' indices (`ids`: theirs in the scene), then
+ * scattered back; a see-through triangle's own edges stay borders (P1
+ * never reads them). */
+static bool occluder_adjacency(const scn_scene* scene, const uint32_t* remap, uint32_t* adjacency, char* err,
+                               size_t err_size)
+{
+    uint32_t* ids = malloc(sizeof(uint32_t) * scene->triangle_count);
+    uint32_t* indices = malloc(sizeof(uint32_t) * 3 * (size_t)scene->triangle_count);
+    uint32_t* compact = malloc(sizeof(uint32_t) * 3 * (size_t)scene->triangle_count);
+    bool ok = ids && indices && compact;
+    if (!ok)
+        snprintf(err, err_size, "pvs: out of memory for the adjacency of %s", scene->name);
+    uint32_t n = 0;
+    for (uint32_t t = 0; ok && t < scene->triangle_count; t++) {
+        if (occluder(scene, t)) {
+            memcpy(indices + 3 * (size_t)n, scene->indices + 3 * (size_t)t, 3 * sizeof(uint32_t));
+            ids[n++] = t;
+        }
+    }
+    if (ok) {
+        scn_build_adjacency(compact, indices, n, remap);
+        size_t joined = scn_join_tjunctions(compact, indices, n, scene->positions);
+        tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges continue flat past a T-junction (not silhouettes)",
+               scene->name, joined);
+        ok = mark_cracks(scene, indices, n, compact, err, err_size);
+    }
+    for (size_t i = 0; ok && i < 3 * (size_t)scene->triangle_count; i++)
+        adjacency[i] = SCN_EDGE_BORDER;
+    for (uint32_t c = 0; ok && c < n; c++) {
+        for (uint32_t e = 0; e < 3; e++) {
+            uint32_t other = compact[3 * (size_t)c + e];
+            adjacency[3 * (size_t)ids[c] + e] = other < TV_ADJ_CRACK ? ids[other] : other;
+        }
+    }
+    free(ids);
+    free(indices);
+    free(compact);
+    return ok;
 }
 
 /* Welded adjacency, uploaded once: P1 finds silhouettes with it. */
@@ -178,11 +231,7 @@ static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err
         snprintf(err, err_size, "pvs: out of memory for the adjacency of %s", scene->name);
     if (ok) {
         scn_weld_positions(remap, scene->positions, scene->vertex_count);
-        scn_build_adjacency(adjacency, scene->indices, scene->triangle_count, remap);
-        size_t joined = scn_join_tjunctions(adjacency, scene->indices, scene->triangle_count, scene->positions);
-        tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges continue flat past a T-junction (not silhouettes)",
-               scene->name, joined);
-        ok = mark_cracks(scene, adjacency, err, err_size);
+        ok = occluder_adjacency(scene, remap, adjacency, err, err_size);
         rnd_staging staging = {0};
         ok = ok && rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size) &&
              rnd_upload_buffer(ctx->rnd, ctx->stream.cmd, &staging, adjacency,
@@ -238,9 +287,16 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     pvs_desc d = desc ? *desc : (pvs_desc){0};
     if (!check_desc(&d, err, err_size))
         return NULL;
-    if (scene->triangle_count >= TV_ID_STRADDLED) { /* the id flags sit above the ids */
-        snprintf(err, err_size, "pvs: %s has %u triangles, the PVS handles fewer than %u", scene->name,
-                 scene->triangle_count, TV_ID_STRADDLED);
+    uint32_t max_proxies = d.max_proxies ? d.max_proxies : PVS_DEFAULT_MAX_PROXIES;
+    /* the id flags sit above the ids, proxy faces included */
+    if ((uint64_t)scene->triangle_count + 12ull * max_proxies >= TV_ID_STRADDLED) {
+        snprintf(err, err_size, "pvs: %s has %u triangles and room for %u proxies, the PVS handles fewer than %u ids",
+                 scene->name, scene->triangle_count, max_proxies, TV_ID_STRADDLED);
+        return NULL;
+    }
+    if (scene->dynamic_triangle_count > scene->triangle_count) {
+        snprintf(err, err_size, "pvs: %s has %u dynamic triangles of %u", scene->name,
+                 scene->dynamic_triangle_count, scene->triangle_count);
         return NULL;
     }
     if (rnd_scene_triangle_count(gpu) != scene->triangle_count) {
@@ -265,10 +321,19 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     ctx->near_m = d.near_m > 0.0f ? d.near_m : PVS_DEFAULT_NEAR;
     ctx->max_layers = d.max_layers;
     ctx->triangle_count = scene->triangle_count;
+    ctx->max_proxies = max_proxies;
+    scn_scene statics = *scene; /* the octree holds the static triangles only */
+    statics.triangle_count -= scene->dynamic_triangle_count;
     const VkDescriptorPoolSize pool_sizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, TV_PVS_BINDINGS - 2},
                                                 {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2}};
     pvs_octree_desc od = {.max_triangles_per_leaf = d.octree_cap, .max_depth = d.octree_depth};
-    bool ok = pvs_octree_build(&od, scene, &ctx->octree, err, err_size) &&
+    ctx->proxy_always = malloc(sizeof(bool) * max_proxies);
+    if (!ctx->proxy_always) {
+        snprintf(err, err_size, "pvs: out of memory for %u proxies", max_proxies);
+        pvs_destroy(ctx);
+        return NULL;
+    }
+    bool ok = pvs_octree_build(&od, &statics, &ctx->octree, err, err_size) &&
               rnd_stream_create(rnd, &ctx->stream, err, err_size) && pvs_pipelines_create(ctx, err, err_size) &&
               create_fixed_buffers(ctx, err, err_size) &&
               rnd_descriptor_set_create(rnd, ctx->set_layout, pool_sizes, 2, &ctx->pool, &ctx->set, err, err_size) &&
@@ -305,8 +370,10 @@ void pvs_destroy(pvs_context* ctx)
     }
     rnd_stream_destroy(r, &ctx->stream);
     pvs_layers_free(&ctx->layers);
+    pvs_proxy_sort_free(&ctx->proxy_sort);
     pvs_octree_free(&ctx->octree);
     free(ctx->result);
     free(ctx->per_layer);
+    free(ctx->proxy_always);
     free(ctx);
 }

@@ -6,6 +6,7 @@
 
 #include "layers.h"
 #include "octree.h"
+#include "proxies.h"
 #include "pvs.h"
 #include "render_vk.h"
 #include "tiles.h"
@@ -53,11 +54,14 @@ struct pvs_context {
     uint32_t coop_sort_min; /* specialisation constants of P3's per-thread pass ... */
     uint32_t coop_width;    /* ... and of its cooperative pass: workgroup size = subgroup size */
     float near_m;
-    uint32_t triangle_count;
+    uint32_t triangle_count; /* the scene's; proxy faces follow (pvs_geometry.glsl) */
+    uint32_t max_proxies;
 
-    pvs_octree octree;
+    pvs_octree octree; /* of the static triangles (scn_scene.dynamic_triangle_count) */
     pvs_layers layers;
     uint32_t max_layers; /* pvs_desc.max_layers */
+    pvs_proxy_sort proxy_sort;
+    bool* proxy_always; /* max_proxies entries: pvs_proxies_sort's `always` */
 
     rnd_stream stream;
     VkQueryPool timestamps; /* 2 per phase-step, VK_NULL_HANDLE when unsupported */

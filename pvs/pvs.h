@@ -45,6 +45,7 @@ typedef struct pvs_desc {
     uint32_t max_tile_pixels;        /* the image is computed in tiles of at most this many pixels
                                         (pvs/tiles.h; per-pixel memory follows the tile); 0: 512 x 512;
                                         lowered to what maxStorageBufferRange allows */
+    uint32_t max_proxies;            /* most proxies one pvs_compute_dynamic takes; 0: 1024 */
 } pvs_desc;
 
 /* The apex may lie at most pvs_max_apex_offset(near_m) behind v0, that is
@@ -57,6 +58,8 @@ typedef struct pvs_desc {
  * 9.5 mm; nothing at all at z = 1e5 m, where every depth rounds to the far
  * plane's). With the default near plane the limit is z <= 31.7 m. */
 #define PVS_MAX_DEPTH_STEP_M 0.006f
+#define PVS_DEFAULT_NEAR 0.01f /* pvs_desc.near_m's default */
+/* near_m 0: PVS_DEFAULT_NEAR. */
 float pvs_max_apex_offset(float near_m);
 
 /* One layer's share of a computation (docs/pvs-gpu-passes.md, "Cost per
@@ -88,6 +91,10 @@ typedef struct pvs_stats {
     uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
     uint64_t coop_pixels;         /* pixel resolves whose sequences a workgroup sorted */
     uint32_t tiles;               /* tiles the image was computed in (pvs_desc.max_tile_pixels) */
+    uint32_t proxies;             /* proxies given to pvs_compute_dynamic */
+    uint32_t proxies_output;      /* of those, the ones whose ids joined the result */
+    uint32_t proxies_always;      /* of those, output without drawing: the box meets the viewcell's
+                                     bounding sphere or leaves the octree's root cube */
     const pvs_layer_stats* per_layer; /* `layers` entries, owned by the context like pvs_result.ids */
 } pvs_stats;
 
@@ -114,8 +121,29 @@ void pvs_destroy(pvs_context* ctx);
  * until the GPU is done. Returns false with a one-line reason in err on an
  * invalid viewcell (non-finite values, zero forward, up parallel to forward,
  * fov outside (0, 180), far_m <= 0, an apex offset z = Δ / tan α beyond
- * pvs_max_apex_offset) or a Vulkan failure. */
+ * pvs_max_apex_offset) or a Vulkan failure. The scene's dynamic triangles
+ * (scn_scene.dynamic_triangle_count) are never in it: pvs_compute_dynamic
+ * adds them through proxies. */
 bool pvs_compute(pvs_context* ctx, const pvs_viewcell* vc, pvs_result* out, char* err, size_t err_size);
+
+/* A moving object over a PVS's use window: a box holding it over the whole
+ * window. A proxy never occludes; when any part of its box may be visible
+ * from the viewcell, ids [first_id, first_id+id_count) join the result. */
+typedef struct pvs_proxy {
+    float box_min[3], box_max[3];
+    uint32_t first_id, id_count;
+} pvs_proxy;
+
+/* pvs_compute with moving objects: each proxy's box is sorted into the
+ * octree leaves it touches for this request (the paper's lazy sorting,
+ * section 5) and drawn as 12 see-through triangles (docs/trim-regions.md,
+ * "See-through triangles and proxies"). pvs_compute(...) is
+ * pvs_compute_dynamic(..., NULL, 0, ...). Returns false with a one-line
+ * reason in err, besides pvs_compute's cases, when proxy_count exceeds
+ * pvs_desc.max_proxies, a box is not finite or has min > max, or an id range
+ * leaves the scene's triangles. */
+bool pvs_compute_dynamic(pvs_context* ctx, const pvs_viewcell* vc, const pvs_proxy* proxies, uint32_t proxy_count,
+                         pvs_result* out, char* err, size_t err_size);
 
 /* The frustum pvs_compute uses, as an rnd_camera at the apex v* (aspect of
  * the PVS resolution): for tests and visualisation. */

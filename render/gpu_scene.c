@@ -59,6 +59,8 @@ static material_gpu* convert_materials(const scn_scene* s)
             out[i].flags |= TV_MAT_ALPHA_MASK;
         if (m->double_sided)
             out[i].flags |= TV_MAT_DOUBLE_SIDED;
+        if (m->alpha_mode == SCN_ALPHA_BLEND)
+            out[i].flags |= TV_MAT_ALPHA_BLEND;
         out[i].alpha_cutoff = m->alpha_cutoff;
     }
     return out;

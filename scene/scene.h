@@ -23,7 +23,8 @@ extern "C" {
 typedef enum scn_alpha_mode {
     SCN_ALPHA_OPAQUE = 0,
     SCN_ALPHA_MASK = 1, /* fragments with alpha < alpha_cutoff are discarded in every pass */
-    SCN_ALPHA_BLEND = 2 /* rendered as opaque: a PVS has no notion of partial coverage */
+    SCN_ALPHA_BLEND = 2 /* see-through: never an occluder in the PVS (docs/trim-regions.md, "See-through
+                           triangles") nor in the ground truth; drawn opaque by the renderer */
 } scn_alpha_mode;
 
 typedef struct scn_material {
@@ -51,6 +52,7 @@ typedef struct scn_scene {
     uint32_t triangle_count;
     uint32_t* indices;      /* 3 per triangle, into the vertex arrays */
     uint32_t* tri_material; /* material index per triangle */
+    uint32_t dynamic_triangle_count; /* the last N triangles move (scn_mover); not in the PVS octree */
 
     uint32_t material_count;
     scn_material* materials;

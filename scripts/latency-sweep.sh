@@ -3,7 +3,8 @@
 # one recorded trace (HoloLens 1, placed in builtin:interior as docs/paths.md shows) at the
 # fixed 50 ms latency model and at measured latency factors 0.1, 0.3 and 1, as short runs.
 # Writes OUT/<path>-<latency>/ (summary.json, frames.csv), OUT/sweep.md (the table) and
-# OUT/sweep.png (misses, PSNR, PVS size against the latency model).
+# OUT/sweep.png (misses and whole-scene frames, PSNR mean and p5, PVS size, Δ and PVS FOV
+# against the latency model).
 #
 #   scripts/latency-sweep.sh [OUT]        (default out/latency-sweep)
 #
@@ -32,8 +33,8 @@ fi
 
 table=$OUT/sweep.md
 data=$OUT/sweep.dat
-printf '| path | latency | misses / frames checked | PSNR mean / p5 dB | FN px mean | PVS %% | Δ cm | PVS FOV ° | PVSs (all directions, clamped) | PVS ms mean |\n' >"$table"
-printf '|---|---|---|---|---|---|---|---|---|---|\n' >>"$table"
+printf '| path | latency | misses / frames checked | whole-scene frames | PSNR mean / p5 dB | FN px mean | PVS %% | Δ cm | PVS FOV ° | PVSs computed (all directions) | whole-scene PVSs | PVS ms mean |\n' >"$table"
+printf '|---|---|---|---|---|---|---|---|---|---|---|---|\n' >>"$table"
 : >"$data"
 i=0
 for p in $paths; do
@@ -50,20 +51,25 @@ for p in $paths; do
             --no-plots --no-progress --out "$dir" >"$dir.log" 2>&1 || echo "latency-sweep: $dir failed (see $dir.log)" >&2
         j=$dir/summary.json
         [ -f "$j" ] || continue
-        # one table row and one gnuplot row (index, label, misses, PSNR mean with 100 for
-        # identical, PVS %) from summary.json's "key": value lines
+        # one table row and one gnuplot row (index, label, misses, whole-scene frames, PSNR
+        # mean and p5 with 100 for identical, PVS %, Δ cm, FOV) from summary.json's lines
         awk -v n="$name" -v l="$lat" -v i="$i" -v table="$table" -v data="$data" '
             /^ *"[a-z_0-9]+": / { k = $0; sub(/^ *"/, "", k); sub(/".*/, "", k)
                                   v = $0; sub(/^[^:]*: */, "", v); sub(/,$/, "", v); s[k] = v }
             END {
                 ps = s["psnr_mean_db"]; p5 = s["psnr_p5_db"]
-                printf "| %s | %s | %s / %s | %s / %s | %.1f | %.2f | %.1f | %.1f | %s (%s, %s) | %.0f |\n",
-                    n, l, s["viewcell_miss_frames"], s["coverage_frames"],
-                    (ps == "null" ? "inf" : sprintf("%.1f", ps)), (p5 == "null" ? "inf" : sprintf("%.1f", p5)),
-                    s["fn_pixels_mean"], 100 * s["pvs_fraction_mean"], 100 * s["delta_mean_m"], s["fov_pvs_mean_deg"],
-                    s["pvs_count"], s["omni_pvs_count"], s["clamped_pvs_count"], s["pvs_ms_mean"] >>table
-                printf "%d \"%s %s\" %s %s %.3f\n", i, n, l, s["viewcell_miss_frames"], (ps == "null" ? 100 : ps),
-                    100 * s["pvs_fraction_mean"] >>data
+                ps = (ps ~ /inf/ ? "inf" : ps); p5 = (p5 ~ /inf/ ? "inf" : p5)
+                d = s["delta_mean_m"]; fv = s["fov_pvs_mean_deg"]
+                printf "| %s | %s | %s / %s | %s | %s / %s | %.1f | %.2f | %s | %s | %s (%s) | %s | %s |\n",
+                    n, l, s["viewcell_miss_frames"], s["coverage_frames"], s["whole_scene_frames"],
+                    (ps == "inf" ? "inf" : sprintf("%.1f", ps)), (p5 == "inf" ? "inf" : sprintf("%.1f", p5)),
+                    s["fn_pixels_mean"], 100 * s["pvs_fraction_mean"],
+                    (d == "null" ? "-" : sprintf("%.1f", 100 * d)), (fv == "null" ? "-" : sprintf("%.1f", fv)),
+                    s["pvs_count"], s["omni_pvs_count"], s["whole_scene_pvs_count"],
+                    (s["pvs_ms_mean"] == "null" ? "-" : sprintf("%.0f", s["pvs_ms_mean"])) >>table
+                printf "%d \"%s %s\" %s %s %s %s %.3f %s %s\n", i, n, l, s["viewcell_miss_frames"], s["whole_scene_frames"],
+                    (ps == "inf" ? 100 : ps), (p5 == "inf" ? 100 : p5), 100 * s["pvs_fraction_mean"],
+                    (d == "null" ? "NaN" : 100 * d), (fv == "null" ? "NaN" : fv) >>data
             }' "$j"
         i=$((i + 1))
     done
@@ -71,15 +77,25 @@ done
 cat "$table"
 if command -v gnuplot >/dev/null 2>&1; then
     gnuplot <<GP || echo "latency-sweep: gnuplot failed: no sweep.png" >&2
-set terminal pngcairo size 1100,420 font ',9'
+set terminal pngcairo size 1200,760 font ',9'
 set output '$OUT/sweep.png'
+set multiplot layout 2,2
 set style data histograms
 set style fill solid 0.7
 set xtics rotate by -30
-set ylabel 'viewcell-miss frames, PVS % of the scene'
-set y2label 'PSNR mean (dB; 100 = identical)'
-set y2tics
 set key top left
-plot '$data' using 3:xtic(2) title 'misses', '' using 5 title 'PVS %', '' using 0:4 axes x1y2 with linespoints pt 7 title 'PSNR mean'
+set title 'frames (of those checked)'
+plot '$data' using 3:xtic(2) title 'viewcell misses', '' using 4 title 'whole-scene frames'
+set title 'PSNR, PVS render vs full (dB; 100 = identical)'
+set yrange [0:105]
+plot '$data' using 5:xtic(2) title 'mean', '' using 6 title 'p5'
+set yrange [*:*]
+set title 'PVS size (% of the scene, 100 = whole scene)'
+plot '$data' using 7:xtic(2) title 'PVS %'
+set title 'viewcell of computed PVSs (log scale)'
+set logscale y
+set style data linespoints
+plot '$data' using 0:8:xtic(2) pt 7 title 'Δ cm', '' using 0:9 pt 5 title 'PVS FOV °'
+unset multiplot
 GP
 fi

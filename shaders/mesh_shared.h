@@ -41,5 +41,6 @@
 #define TV_MAT_TEXTURED   1u
 #define TV_MAT_ALPHA_MASK 2u
 #define TV_MAT_DOUBLE_SIDED 4u
+#define TV_MAT_ALPHA_BLEND 8u /* see-through: the PVS passes never let it occlude */
 
 #endif

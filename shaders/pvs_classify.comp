@@ -6,16 +6,18 @@
 // one frustum plane, and emits a silhouette record (trim quad + umbra quad,
 // one trim-region id) for every silhouette edge it owns: border and
 // non-manifold edges always, an edge to an opposite-facing neighbour when
-// this triangle is the front-facing one. Counts go straight into the
-// indirect draw commands, so nothing returns to the CPU between phases.
+// this triangle is the front-facing one. A see-through triangle (a proxy's
+// face, an SCN_ALPHA_BLEND one) goes to the FF list whichever way it faces
+// and has no silhouette: it never occludes (pvs_face.frag). Counts go
+// straight into the indirect draw commands, so nothing returns to the CPU
+// between phases.
 #extension GL_GOOGLE_include_directive : require
-#include "mesh_common.glsl"
-#include "pvs_common.glsl"
+#include "pvs_geometry.glsl"
 #include "pvs_trim.glsl"
 
 layout(local_size_x = TV_WG_SIZE) in;
 
-vec3 corner_position(uint tri, uint c) { return tv_vertex_position(tv_vertex_index(tri, c)); }
+vec3 corner_position(uint tri, uint c) { return pvs_corner(tri, c); }
 
 bool front_facing(uint tri)
 {
@@ -77,9 +79,14 @@ void main()
         return;
     uint tri = layer_tris[pc.layer_offset + i];
     vec3 p[3] = vec3[3](corner_position(tri, 0u), corner_position(tri, 1u), corner_position(tri, 2u));
-    bool front = front_facing(tri);
     uint codes = outcode(view.view_proj * vec4(p[0], 1.0)) & outcode(view.view_proj * vec4(p[1], 1.0)) &
                  outcode(view.view_proj * vec4(p[2], 1.0));
+    if (pvs_seethrough(tri)) {
+        if (codes == 0u)
+            ff_list[atomicAdd(counters[TV_PVS_C_DRAW_FF], 3u) / 3u] = tri;
+        return;
+    }
+    bool front = front_facing(tri);
     if (codes == 0u) {
         // A single-sided back wholly behind the viewcell (short of its plane
         // by more than rounding) the renderer culls from every eye; a back

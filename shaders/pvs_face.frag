@@ -18,8 +18,14 @@
 // back the same way: such a sliver may cover no pixel centre at all, so it is
 // in no sequence otherwise (P3 outputs it only in front of every face at the
 // centre; pvs_resolve.glsl's walk).
+// A see-through triangle (pvs_geometry.glsl) is drawn by the dilated pass
+// only, as a candidate front at every pixel it touches, centre covered or
+// not, and writes no depth anywhere: no visibility buffer, no centre depth,
+// so it hides nothing; it is flagged where the candidate rule above finds
+// it in front of the nearest centre depth, and P3 outputs it outside every
+// hidden range (docs/trim-regions.md, "See-through triangles and proxies").
 #extension GL_GOOGLE_include_directive : require
-#include "mesh_common.glsl"
+#include "pvs_geometry.glsl"
 #include "pvs_kbuffer.glsl"
 
 layout(location = 0) in vec2 v_uv;
@@ -89,7 +95,7 @@ void spill(uint p, float w, float slope)
             tri_flags[v_triangle] = 1u;
         return;
     }
-    if (v_s2.z == 0.0 || covers_centre())
+    if (!pvs_seethrough(v_triangle) && (v_s2.z == 0.0 || covers_centre()))
         return; // not a candidate: the exact spill draw's
     float depth = max(v_near, w - 0.5 * slope); // as P2 pushed it
     if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE])) // P3's bound
@@ -106,8 +112,10 @@ void main()
         slope = abs(dFdx(w)) + abs(dFdy(w));
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && v_s2.z != 0.0 && !touches_pixel())
         discard;
-    vec4 base = tv_material_color(v_material, v_uv);
-    if (tv_alpha_masked(v_material, base.a))
+    bool see = pvs_seethrough(v_triangle);
+    if (see && (pc.kind & TV_PVS_KIND_WIDE) == 0u)
+        discard;
+    if (!see && tv_alpha_masked(v_material, tv_material_color(v_material, v_uv).a))
         discard;
     uint p = pvs_pixel();
     if ((v_id_flags & TV_ID_CULLED) != 0u) {
@@ -127,6 +135,8 @@ void main()
     o_triangle = v_triangle;
     if ((pc.kind & TV_PVS_KIND_SPILL) != 0u) {
         spill(p, w, slope);
+        if (see)
+            discard;
         return;
     }
     uint kind = pc.kind & ~TV_PVS_KIND_WIDE, id = v_triangle | v_id_flags;
@@ -140,7 +150,7 @@ void main()
         // so every fragment covers its centre and only the tie rule applies.
         // Skipping it lost a floor crossing the near plane that z-fights
         // with its coincident reverse-wound twin.
-        if (v_s2.z == 0.0 || covers_centre()) {
+        if (!see && (v_s2.z == 0.0 || covers_centre())) {
             // Tied in depth with the nearest face at this centre (coplanar
             // faces): the depth test kept one, but an eye's raster may show
             // either (z-fighting), so both are visible from v*.
@@ -170,10 +180,10 @@ void main()
     if (pvs_sealed(p)) { // a face of a later layer in front of the terminator (pvs_sealed_output)
         if (pvs_sealed_output(p, w))
             tri_flags[v_triangle] = 1u;
-        return;
-    }
-    if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
+    } else if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
         // overflow policy: left to the spill draws after P3
         atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);
     }
+    if (see)
+        discard; // no depth, no visibility-buffer id (the stores above stay)
 }

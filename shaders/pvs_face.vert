@@ -11,8 +11,7 @@
 // fronts (TV_ID_CANDIDATE).
 #extension GL_GOOGLE_include_directive : require
 #define PVS_RW readonly
-#include "mesh_common.glsl"
-#include "pvs_common.glsl"
+#include "pvs_geometry.glsl"
 
 layout(location = 0) out vec2 v_uv;
 layout(location = 1) flat out uint v_triangle;
@@ -101,13 +100,13 @@ void main()
     uint tri = listed & ~(TV_ID_CULLED | TV_ID_STRADDLED);
     vec4 c[3];
     for (uint i = 0u; i < 3u; i++)
-        c[i] = view.view_proj * vec4(tv_vertex_position(tv_vertex_index(tri, i)), 1.0);
+        c[i] = view.view_proj * vec4(pvs_corner(tri, i), 1.0);
     vec4 pos = c[corner];
     v_far = max(max(c[0].w, c[1].w), c[2].w);
     v_near = min(min(c[0].w, c[1].w), c[2].w);
     v_s01 = vec4(0.0);
     v_s2 = vec3(0.0);
-    v_uv = tv_vertex_uv(tv_vertex_index(tri, corner));
+    v_uv = pvs_corner_uv(tri, corner);
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && c[0].w > 0.0 && c[1].w > 0.0 && c[2].w > 0.0) {
         vec2 s[3] = vec2[3](screen(c[0]), screen(c[1]), screen(c[2]));
         vec2 a = s[1] - s[0], b = s[2] - s[0];
@@ -128,9 +127,8 @@ void main()
                 // close to v*, where it would hide what it does not)
                 vec3 b = bary(s, t[corner]) * inv_w;
                 float w = 1.0 / (b.x + b.y + b.z);
-                v_uv = w * (b.x * tv_vertex_uv(tv_vertex_index(tri, 0u)) +
-                            b.y * tv_vertex_uv(tv_vertex_index(tri, 1u)) +
-                            b.z * tv_vertex_uv(tv_vertex_index(tri, 2u)));
+                v_uv = w * (b.x * pvs_corner_uv(tri, 0u) + b.y * pvs_corner_uv(tri, 1u) +
+                            b.z * pvs_corner_uv(tri, 2u));
                 vec3 z = vec3(c[0].z, c[1].z, c[2].z) * inv_w;
                 float ndc_z = clamp(w * dot(b, vec3(c[0].z, c[1].z, c[2].z)), min(min(z.x, z.y), z.z),
                                     max(max(z.x, z.y), z.z));
@@ -144,5 +142,5 @@ void main()
     gl_Position = pos;
     v_triangle = tri;
     v_id_flags = listed & ~tri;
-    v_material = tv_tri_material[tri];
+    v_material = pvs_material(tri);
 }

@@ -187,7 +187,8 @@
 #define TV_PVS_LOST_TRIM      2u
 #define TV_PVS_LOST_STRIDE    3u
 #define TV_PVS_BIND_COOP_LIST  22 // P3: pixels whose sequence the cooperative pass sorts (pvs_resolve_group.comp)
-#define TV_PVS_BINDINGS        23
+#define TV_PVS_BIND_PROXIES    23 // vec4 min, vec4 max per proxy of the request (pvs_compute_dynamic); P1, P2 pull their box faces
+#define TV_PVS_BINDINGS        24
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
 // behind e1, trim corner behind e0 (w: their nearer plane depths), umbra

@@ -7,6 +7,7 @@
 #       'psnr_min_db == inf' asserts identical images)
 #   replay_checks.sh csv DIR MIN_ROWS                frames.csv well formed, >= MIN_ROWS rows
 #   replay_checks.sh same DIR1 DIR2                  frames.csv equal except wall-clock columns
+#   replay_checks.sh keys DIR1 DIR2 key...           these summary.json values equal in both
 #   replay_checks.sh interrupt DIR SECONDS command...  kill -9 the command mid-run, then check csv
 #   replay_checks.sh sigint DIR SECONDS command...     SIGINT mid-run into a folder holding an older
 #       run's outputs: non-zero exit, "interrupted" on stderr, summary.json marked interrupted with
@@ -98,6 +99,17 @@ summary)
     ;;
 csv)
     check_csv "$1" "$2"
+    ;;
+keys)
+    d1=$1
+    d2=$2
+    shift 2
+    for k in "$@"; do
+        v1=$(grep "^ *\"$k\": " "$d1/summary.json") || fail "$d1/summary.json has no $k"
+        v2=$(grep "^ *\"$k\": " "$d2/summary.json") || fail "$d2/summary.json has no $k"
+        [ "$v1" = "$v2" ] || fail "$k differs: $v1 against $v2"
+        echo "ok: $v1 in both"
+    done
     ;;
 same)
     strip() {

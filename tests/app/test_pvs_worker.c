@@ -121,6 +121,16 @@ static void test_measured_latency(void)
     TV_CHECK(r.t_available >= 0.0195 && r.t_available < 10.0);
     TV_CHECK_NEAR(r.t_available, r.compute_ms * 1e-3 * 0.5, 1e-12);
     tv_pvs_result_free(&r);
+    /* a PVS faster than the latency it was sized for waits for its window:
+     * finished (the poll at 4 s waits for the 40 ms compute) but not handed
+     * out before t_begin = 5 s */
+    pred_viewcell vc = cell(0.04f);
+    vc.t_begin = 5.0;
+    tv_worker_submit(w, &vc, &vc, 0.0);
+    TV_CHECK(tv_worker_poll(w, 4.0, &r, err, sizeof err) == 0 && atomic_load(&f.finished) == 2);
+    TV_CHECK(tv_worker_poll(w, 5.0, &r, err, sizeof err) == 1);
+    TV_CHECK_NEAR(r.t_available, 5.0, 0);
+    tv_pvs_result_free(&r);
     tv_worker_stop(w);
 }
 

@@ -39,7 +39,9 @@ static void refuses_bad_input(void)
 {
     const char* bad[] = {"",          "{",          "{\"a\" 1}",   "{\"a\": 1,}", "[1 2]",    "[1] x",
                          "\"abc",     "\"a\\q\"",   "\"\\u12\"",   "-",           "1e",       "{1: 2}",
-                         "[tru]",     "\"a\tb\"",   "{\"a\": [1, {\"b\": }]}"};
+                         "[tru]",     "\"a\tb\"",   "{\"a\": [1, {\"b\": }]}",
+                         /* a quote inside \u's four digits must not end the string early */
+                         "[\"\\u12\"4abcdefghijklmnopqrstuvwxyz\"]"};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char err[256] = "";
         tv_json j;

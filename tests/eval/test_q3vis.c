@@ -135,14 +135,15 @@ static void test_errors(void)
                  "min exceeds max");
     expect_error("truncated.pvs.json", "{\"n_clusters\": 1, \"bytes_per_cluster\"", "unexpected end of file");
     expect_error("syntax.pvs.json", "{\"n_clusters\" 1}", "byte 14: expected ':'");
-    expect_error("trailing.pvs.json", "{} x", "missing key");
+    expect_error("trailing.pvs.json", "{} x", "trailing bytes after the document");
+    expect_error("nokey0.pvs.json", "{}", "missing key n_clusters");
     expect_error("empty.pvs.json", "", "unexpected end of file");
     char deep[300];
     memset(deep, '[', 200);
     snprintf(deep + 200, sizeof deep - 200, "]");
     char nested[400];
     snprintf(nested, sizeof nested, "{\"x\": %s}", deep);
-    expect_error("deep.pvs.json", nested, "nesting deeper than");
+    expect_error("deep.pvs.json", nested, "nested too deeply");
 }
 
 /* Random truncations and byte edits of the small file: each parse either

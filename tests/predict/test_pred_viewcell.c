@@ -250,9 +250,20 @@ static void test_sizing_covers_predicted_eyes(void)
         }
     }
     TV_CHECK(missed > 0);
-    /* clamping: a 1 m error bound exceeds max_delta */
+    /* no clamp: a 1 m error bound makes delta at least 1 m / cos alpha; a
+     * delta or apex limit below it gives the whole scene, which covers any eye */
     pred_viewcell_from_poses(&desc, heads, 9, 4, 1.0, rot_err, &vc);
-    TV_CHECK(vc.clamped && vc.delta == 0.5f);
+    TV_CHECK(!vc.clamped && !vc.whole_scene && vc.delta >= 1.0 / cos(0.5 * vc.fov_pvs_deg * PRED_DEG));
+    pred_viewcell sized = vc;
+    pred_viewcell_desc limited = desc;
+    limited.max_apex_offset_m = 0.99f * sized.z;
+    pred_viewcell_from_poses(&limited, heads, 9, 4, 1.0, rot_err, &vc);
+    TV_CHECK(vc.whole_scene &&
+             pred_viewcell_contains(&vc, (double[3]){1e3, 0, 0}, (double[4]){0, 0, 0, 1}, 60, 60, NULL));
+    limited = desc;
+    limited.max_delta_m = 0.99f * sized.delta;
+    pred_viewcell_from_poses(&limited, heads, 9, 4, 1.0, rot_err, &vc);
+    TV_CHECK(vc.whole_scene && vc.delta == sized.delta);
 }
 
 static void test_size_from_predictor(void)

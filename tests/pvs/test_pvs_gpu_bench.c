@@ -4,7 +4,10 @@
  * x y z and the forward vector (defaults: builtin:city from a street).
  * Checks that a render of the PVS from the apex equals the full render's
  * depth at every pixel and that no validation message appeared; prints
- * medians over the runs. */
+ * medians over the runs. Then the cost of moving objects: PROXIES car-sized
+ * proxy boxes (pvs_compute_dynamic) spread over the scene's ground, run
+ * alternately with the static PVS, which their result must contain
+ * (proxies never occlude). */
 #include "pvs.h"
 #include "render_fixture.h"
 #include "test.h"
@@ -16,6 +19,7 @@
 #define W 512u
 #define H 512u
 #define RUNS 5
+#define PROXIES 40
 
 static double median(double* v, int n)
 {
@@ -79,10 +83,48 @@ int main(int argc, char** argv)
            median(phase[0], RUNS), median(phase[1], RUNS), median(phase[2], RUNS), median(phase[3], RUNS),
            median(phase[4], RUNS), median(total, RUNS), median(full, RUNS), median(total, RUNS) / median(full, RUNS));
 
-    /* the last draw was the full render from the apex at the PVS's frustum */
+    /* proxies: without ids, so that the results compare with the static one */
+    pvs_proxy proxies[PROXIES];
+    uint32_t seed = 7u;
+    for (int i = 0; i < PROXIES; i++) {
+        float at[3];
+        for (int a = 0; a < 3; a += 2) {
+            seed = seed * 1664525u + 1013904223u;
+            at[a] = scene.bounds_min[a] + (scene.bounds_max[a] - scene.bounds_min[a]) * (float)(seed >> 8) / 16777216.0f;
+        }
+        proxies[i] = (pvs_proxy){.box_min = {at[0] - 2.25f, scene.bounds_min[1], at[2] - 1.0f},
+                                 .box_max = {at[0] + 2.25f, scene.bounds_min[1] + 1.6f, at[2] + 1.0f}};
+    }
+    double stat[RUNS], dyn[RUNS];
+    uint32_t lost = 0, extra = 0, output = 0;
+    for (int run = 0; run < RUNS; run++) {
+        TV_CHECK(pvs_compute(pvs, &vc, &r, err, sizeof err));
+        stat[run] = r.stats.total_ms;
+        uint32_t* ids = malloc(sizeof(uint32_t) * (r.count ? r.count : 1));
+        uint32_t n = r.count;
+        memcpy(ids, r.ids, sizeof(uint32_t) * n);
+        TV_CHECK(pvs_compute_dynamic(pvs, &vc, proxies, PROXIES, &r, err, sizeof err));
+        dyn[run] = r.stats.total_ms;
+        output = r.stats.proxies_output;
+        uint32_t j = 0;
+        lost = 0;
+        for (uint32_t i = 0; i < n; i++) { /* both sorted */
+            while (j < r.count && r.ids[j] < ids[i])
+                j++;
+            lost += j == r.count || r.ids[j] != ids[i];
+        }
+        extra = r.count - (n - lost);
+        free(ids);
+    }
+    printf("  %d proxies: %u output; PVS %u ids lost, %u added; median ms static %.2f, with proxies %.2f, ratio %.2f\n",
+           PROXIES, output, lost, extra, median(stat, RUNS), median(dyn, RUNS), median(dyn, RUNS) / median(stat, RUNS));
+    TV_CHECK(lost == 0);
+
+    /* the static PVS again, and the full render from the apex at the PVS's frustum */
     float* full_depth = malloc(sizeof(float) * W * H);
     float* pvs_depth = malloc(sizeof(float) * W * H);
     rnd_camera cam = pvs_apex_camera(pvs, &vc);
+    TV_CHECK(pvs_compute(pvs, &vc, &r, err, sizeof err) && rnd_draw(rnd, target, gpu, &cam, NULL, 0, NULL));
     TV_CHECK(full_depth && pvs_depth && rnd_target_read_depth(rnd, target, full_depth) &&
              rnd_draw(rnd, target, gpu, &cam, r.ids, r.count, NULL) && rnd_target_read_depth(rnd, target, pvs_depth));
     uint32_t missing = 0;

@@ -3,7 +3,8 @@
  * to fill the k-buffers and pixel states of a 64x64 PVS with random
  * sequences (depths from a few values, so ties of every kind occur;
  * overflowing lists; carried runs and hidden ranges; prior faces; sealed
- * pixels), runs the P3 passes alone, and compares every pixel's output ids,
+ * pixels; see-through pixels, where most fronts are candidates as P2 enters
+ * every see-through fragment, carried ones included), runs the P3 passes alone, and compares every pixel's output ids,
  * stencil, carry (a sealed pixel's terminator depth) and hidden range with
  * pvs_resolve_pixel. Each pixel outputs ids from its
  * own range, so a wrong id cannot hide behind another pixel's. Run once with
@@ -73,9 +74,13 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     kb->back_count = rnd_count();
     kb->trim_count = st->stencil == TV_STENCIL_UNTRIMMED && rnd_u(4) == 0 ? 0 : rnd_count();
     kb->umbra_count = rnd_count();
+    /* a quarter of the pixels see proxy boxes or panes (docs/trim-regions.md,
+     * "See-through triangles and proxies"): three fronts in four candidates */
+    bool see_through = rnd_u(4) == 0;
     for (uint32_t i = 0; i < K; i++) {
         kb->front_depth[i] = rnd_depth();
-        kb->front_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) | (rnd_u(4) == 0 ? TV_ID_CANDIDATE : 0u);
+        bool candidate = see_through ? rnd_u(4) != 0 : rnd_u(4) == 0;
+        kb->front_tri[i] = (base + rnd_u(IDS_PER_PIXEL)) | (candidate ? TV_ID_CANDIDATE : 0u);
         kb->back_depth[i] = rnd_depth();
         /* a quarter candidates, a quarter culled (P2 never makes both), a
          * quarter straddled (a candidate or not) */
@@ -110,6 +115,8 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         uint32_t kind = i == 0 ? TV_ENTRY_FRONT : rnd_u(3) == 0 ? TV_ENTRY_UMBRA : rnd_u(2) ? TV_ENTRY_TRIM
                                                                                           : TV_ENTRY_FRONT;
         uint32_t id = kind == TV_ENTRY_FRONT ? base + rnd_u(IDS_PER_PIXEL) : rnd_region();
+        if (kind == TV_ENTRY_FRONT && i > 0 && (see_through ? rnd_u(2) : rnd_u(4) == 0))
+            id |= TV_ID_CANDIDATE; /* candidates behind the run's first front are carried */
         st->carry[st->carry_count++] = (pvs_entry){d, kind, id};
         d += 0.1f * (float)rnd_u(2);
     }
