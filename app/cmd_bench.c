@@ -31,7 +31,7 @@
 typedef struct bench_opts {
     const char *scenes, *deltas, *methods, *pos, *out, *shard;
     float dir[3], fov, fov_pvs;
-    int every, max_cells, cells_per_job, samples, k;
+    int every, max_cells, cells_per_job, samples, k, max_layers;
     unsigned res[2], pvs_res[2];
     bool jobs;
 } bench_opts;
@@ -192,7 +192,8 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
     pvs_method_kind kind = b->methods[method];
     char err[512], json[4200];
     tv_eval_pvs_json_of(spec, json, sizeof json);
-    pvs_method_desc md = {.kind = kind, .tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k},
+    pvs_method_desc md = {.kind = kind, .tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k,
+                                                   .max_layers = tv_arg_max_layers(o->max_layers)},
                           .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples,
                           .q3vis_file = kind == PVS_METHOD_Q3VIS ? json : NULL};
     pvs_method* m = pvs_method_create(&md, s->ctx, &s->scene, s->gpu, err, sizeof err);
@@ -317,9 +318,10 @@ static void settings_of(const bench_opts* o, char* buf, size_t size)
 {
     snprintf(buf, size,
              "scenes=%s;deltas=%s;methods=%s;path-every=%d;max-cells=%d;cells-per-job=%d;pos=%s;dir=%.9g,%.9g,%.9g;"
-             "samples=%d;res=%ux%u;pvs-res=%ux%u;k=%d;fov=%.9g;fov-pvs=%.9g",
+             "samples=%d;res=%ux%u;pvs-res=%ux%u;k=%d;max-layers=%d;fov=%.9g;fov-pvs=%.9g",
              o->scenes, o->deltas, o->methods, o->every, o->max_cells, o->cells_per_job, o->pos ? o->pos : "", o->dir[0], o->dir[1],
-             o->dir[2], o->samples, o->res[0], o->res[1], o->pvs_res[0], o->pvs_res[1], o->k, o->fov, o->fov_pvs);
+             o->dir[2], o->samples, o->res[0], o->res[1], o->pvs_res[0], o->pvs_res[1], o->k, o->max_layers, o->fov,
+             o->fov_pvs);
 }
 
 /* A shard's results as DIR/part-<I>.json. */
@@ -378,7 +380,8 @@ int tv_cmd_bench(int argc, char** argv)
     }
     bench_opts o = {.scenes = DEFAULT_SCENES, .deltas = "0.05,0.1,0.2,0.3", .methods = "tr,sas,frompoint,gt,q3vis",
                     .out = "out/bench", .dir = {0, 0, -1}, .fov = 60.0f, .fov_pvs = 90.0f, .every = 0,
-                    .max_cells = DEFAULT_CELLS, .samples = 50, .res = {320, 180}, .k = TV_ARGS_DEFAULT_K};
+                    .max_cells = DEFAULT_CELLS, .samples = 50, .res = {320, 180}, .k = TV_ARGS_DEFAULT_K,
+                    .max_layers = TV_ARGS_DEFAULT_MAX_LAYERS};
     const tv_arg args[] = {
         {"scenes", TV_ARG_STRING, &o.scenes, "S,S..", "scenes (default builtin:city, sponza and the six oa: levels)"},
         {"deltas", TV_ARG_STRING, &o.deltas, "M,M..", "viewcell radii, ascending (default 0.05,0.1,0.2,0.3)"},
@@ -393,6 +396,7 @@ int tv_cmd_bench(int argc, char** argv)
         {"res", TV_ARG_RES, o.res, "WxH", "ground-truth and id-buffer resolution (default 320x180)"},
         {"pvs-res", TV_ARG_RES, o.pvs_res, "WxH", "tr resolution and full-render timing (default 512x512)"},
         TV_ARG_K(&o.k),
+        TV_ARG_MAX_LAYERS(&o.max_layers),
         {"fov", TV_ARG_FLOAT, &o.fov, "DEG", "display FOV, horizontal (default 60)"},
         {"fov-pvs", TV_ARG_FLOAT, &o.fov_pvs, "DEG", "PVS FOV, square frustum (default 90)"},
         {"out", TV_ARG_STRING, &o.out, "DIR", "output folder (default out/bench); with --shard: its part file's"},
@@ -414,7 +418,8 @@ int tv_cmd_bench(int argc, char** argv)
     if (!o.pvs_res[0])
         o.pvs_res[0] = o.pvs_res[1] = 512;
     bench_run b = {.o = &o, .t0 = tv_now_ms()};
-    if (!parse_lists(&o, &b) || !tv_arg_require("k", o.k, o.k >= 1, ">= 1"))
+    if (!parse_lists(&o, &b) || !tv_arg_require("k", o.k, o.k >= 1, ">= 1") ||
+        !tv_arg_require("max-layers", o.max_layers, o.max_layers >= 0, ">= 0"))
         return 2;
     float dir_len = sqrtf(o.dir[0] * o.dir[0] + o.dir[1] * o.dir[1] + o.dir[2] * o.dir[2]);
     if (o.every < 0 || o.samples < 1 || o.max_cells < 1 || o.cells_per_job < 0 || !(o.fov > 0.0f && o.fov <= o.fov_pvs) ||

@@ -20,7 +20,7 @@ typedef struct eval_opts {
     const char *scene, *path, *out, *method;
     float pos[3], dir[3];
     float delta, fov, fov_pvs;
-    int every, samples, k, max_cells;
+    int every, samples, k, max_cells, max_layers;
     unsigned res[2], pvs_res[2];
 } eval_opts;
 
@@ -93,6 +93,7 @@ static tv_args_result parse(eval_opts* o, int argc, char** argv)
         {"res", TV_ARG_RES, o->res, "WxH", "sample-view resolution (default 640x360)"},
         TV_ARG_PVS_RES("pvs-res", o->pvs_res),
         TV_ARG_K(&o->k),
+        TV_ARG_MAX_LAYERS(&o->max_layers),
         TV_ARG_METHOD(&o->method),
         {"out", TV_ARG_STRING, &o->out, "DIR", "output folder (default out/eval)"},
     };
@@ -107,9 +108,11 @@ static tv_args_result parse(eval_opts* o, int argc, char** argv)
 
 static bool validate(const eval_opts* o, pvs_method_desc* md)
 {
-    *md = (pvs_method_desc){.tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k},
+    *md = (pvs_method_desc){.tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k,
+                                   .max_layers = tv_arg_max_layers(o->max_layers)},
                             .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples};
-    if (!tv_arg_require("k", o->k, o->k >= 1, ">= 1"))
+    if (!tv_arg_require("k", o->k, o->k >= 1, ">= 1") ||
+        !tv_arg_require("max-layers", o->max_layers, o->max_layers >= 0, ">= 0"))
         return false;
     if ((!o->path && isnan(o->pos[0])) || o->every < 1 || o->samples < 1 || !(o->delta >= 0.0f) ||
         !pvs_method_from_name(o->method, &md->kind)) {
@@ -190,7 +193,8 @@ int tv_cmd_eval(int argc, char** argv)
 {
     eval_opts o = {.out = "out/eval", .method = "tr", .pos = {NAN, NAN, NAN}, .dir = {0, 0, -1}, .delta = 0.1f,
                    .fov = 60.0f, .fov_pvs = 90.0f, .every = 90, .samples = TV_ARGS_DEFAULT_SAMPLES, .res = {640, 360},
-                   .pvs_res = {512, 512}, .k = TV_ARGS_DEFAULT_K};
+                   .pvs_res = {512, 512}, .k = TV_ARGS_DEFAULT_K,
+                   .max_layers = TV_ARGS_DEFAULT_MAX_LAYERS};
     tv_args_result r = parse(&o, argc, argv);
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;

@@ -42,7 +42,7 @@ int tv_cmd_pvs(int argc, char** argv)
     const char *scene = NULL, *method = "tr", *ids_out = NULL;
     float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
-    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0;
+    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
@@ -52,6 +52,7 @@ int tv_cmd_pvs(int argc, char** argv)
         TV_ARG_FOV_PVS(&fov_pvs),
         {"res", TV_ARG_RES, res, "WxH", "PVS resolution (default 512x512)"},
         TV_ARG_K(&k),
+        TV_ARG_MAX_LAYERS(&max_layers),
         {"coop-min", TV_ARG_INT, &coop_min, "N",
          "tr: sort trim sequences of >= N entries with a workgroup per pixel (default 8; 1000: never)"},
         {"tile-pixels", TV_ARG_INT, &tile_pixels, "N",
@@ -65,11 +66,13 @@ int tv_cmd_pvs(int argc, char** argv)
         return r == TV_ARGS_HELP ? 0 : 2;
     /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
     pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k,
-                                 .coop_sort_min = (uint32_t)coop_min, .max_tile_pixels = (uint32_t)tile_pixels},
+                                 .coop_sort_min = (uint32_t)coop_min, .max_tile_pixels = (uint32_t)tile_pixels,
+                                 .max_layers = tv_arg_max_layers(max_layers)},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
     if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
-        !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0"))
+        !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0") ||
+        !tv_arg_require("max-layers", max_layers, max_layers >= 0, ">= 0"))
         return 2;
     if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc)) {
         tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "

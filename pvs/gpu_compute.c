@@ -529,7 +529,7 @@ bool pvs_compute_dynamic(pvs_context* ctx, const pvs_viewcell* vc, const pvs_pro
         snprintf(err, err_size, "pvs_compute: out of memory sorting %u proxies", proxy_count);
         return false;
     }
-    if (!pvs_layers_build(tree, &view, &ctx->layers, err, err_size))
+    if (!pvs_layers_build(tree, &view, ctx->max_layers, &ctx->layers, err, err_size))
         return false;
     const pvs_layers* L = &ctx->layers;
     uint32_t widest = 0;

@@ -59,6 +59,7 @@ struct pvs_context {
 
     pvs_octree octree; /* of the static triangles (scn_scene.dynamic_triangle_count) */
     pvs_layers layers;
+    uint32_t max_layers; /* pvs_desc.max_layers */
     pvs_proxy_sort proxy_sort;
     bool* proxy_always; /* max_proxies entries: pvs_proxies_sort's `always` */
 

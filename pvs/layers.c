@@ -143,8 +143,58 @@ static uint32_t assign_layers(pvs_layers* L, const pvs_octree* tree, const float
     return layer_count;
 }
 
-bool pvs_layers_build(const pvs_octree* tree, const pvs_view* view, pvs_layers* layers, char* err,
-                      size_t err_size)
+/* One greedy pass over the layers: a layer joins the merged layer before it
+ * while that keeps at most `budget` triangles; a layer without triangles
+ * always joins. Returns the merged count. With `map` (one entry per layer)
+ * it also records each layer's merged index and compacts the offsets in
+ * place: a merged layer's bounds are a subset of the original ones, written
+ * at an index never above the one still to be read. */
+static uint32_t merge_pass(pvs_layers* L, uint32_t budget, uint32_t* map)
+{
+    uint32_t m = 0, start = 0, end = 0; /* the current merged layer's triangles: [start, end) */
+    for (uint32_t k = 0; k < L->layer_count; k++) {
+        uint32_t first = L->tri_offsets[k], last = L->tri_offsets[k + 1], leaf_end = L->leaf_offsets[k + 1];
+        if (last > first && end > start && last - start > budget) {
+            m++;
+            start = first;
+        }
+        end = last;
+        if (map) {
+            map[k] = m;
+            L->tri_offsets[m + 1] = last;
+            L->leaf_offsets[m + 1] = leaf_end;
+        }
+    }
+    return m + 1;
+}
+
+/* Merges consecutive layers into at most max_layers, choosing the smallest
+ * per-layer triangle budget that allows it (greedy is optimal for a given
+ * budget, and its count falls as the budget grows: binary search). */
+static void merge_layers(pvs_layers* L, const pvs_octree* tree, uint32_t max_layers)
+{
+    if (L->layer_count == 0)
+        return;
+    uint32_t lo = 0, hi = L->tri_count;
+    while (lo < hi) {
+        uint32_t mid = lo + (hi - lo) / 2;
+        if (merge_pass(L, mid, NULL) <= max_layers)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    uint32_t* map = L->_queue; /* free after assign_layers; layers <= leaves */
+    uint32_t count = merge_pass(L, lo, map);
+    for (uint32_t i = 0; i < tree->leaf_count; i++) {
+        if (L->leaf_layer[i] != PVS_LAYER_CULLED)
+            L->leaf_layer[i] = map[L->leaf_layer[i]];
+    }
+    L->layer_count = count;
+    L->merge_budget = lo;
+}
+
+bool pvs_layers_build(const pvs_octree* tree, const pvs_view* view, uint32_t max_layers, pvs_layers* layers,
+                      char* err, size_t err_size)
 {
     assert(tree && view && layers && tree->leaf_count > 0);
     double start = tv_now_ms();
@@ -208,6 +258,10 @@ bool pvs_layers_build(const pvs_octree* tree, const pvs_view* view, pvs_layers* 
         L->tri_offsets[k + 1] = n_tris;
     }
     L->tri_count = n_tris;
+    L->layers_unmerged = count;
+    L->merge_budget = 0;
+    if (max_layers != PVS_LAYERS_UNMERGED)
+        merge_layers(L, tree, max_layers ? max_layers : PVS_LAYERS_DEFAULT_MAX);
     L->ms = tv_now_ms() - start;
     return true;
 }

@@ -4,6 +4,7 @@
 #ifndef TRIMVR_TESTS_PVS_GPU_CHECKS_H
 #define TRIMVR_TESTS_PVS_GPU_CHECKS_H
 
+#include "layers.h"
 #include "pvs_gpu_fixture.h"
 #include "test.h"
 
@@ -39,6 +40,7 @@ static inline void check_configuration(fixture* f, const char* what, float delta
     pvs_viewcell vc;
     compute_at_origin(f, delta, &vc, &r);
     TV_CHECK(f->octree_cap == 0 || r.stats.layers > 3);
+    TV_CHECK(r.stats.layers <= (f->max_layers ? f->max_layers : PVS_LAYERS_DEFAULT_MAX));
     for (int i = 0; i < n_hidden; i++)
         TV_CHECK(count_in_range(&r, hidden[i], 12) == 0);
     for (int i = 0; i < n_visible; i++)

@@ -41,6 +41,7 @@ typedef struct fixture {
     pvs_context* pvs;
     float *depth, *pvs_depth;
     uint32_t octree_cap;    /* 0: the default */
+    uint32_t max_layers;    /* 0: the default */
     uint32_t coop_sort_min; /* 0: the default */
 } fixture;
 

@@ -68,14 +68,21 @@ static void test_uneroded_wall_in_an_umbra(void)
  * holding its occluder's front face (the prior faces of resolve.h). */
 static void test_occluders_across_layers(void)
 {
-    fixture f = {.octree_cap = 4};
-    uint32_t m = constructed_scene(&f);
-    add_box(&f.scene, -2.0f, -1.5f, -4.2f, 2.0f, 1.5f, -4.0f, m);
-    add_box(&f.scene, -5.0f, -3.0f, -8.2f, 5.0f, 3.0f, -8.0f, m);
-    uint32_t hidden[2] = {add_box(&f.scene, -0.4f, -0.4f, -6.5f, 0.4f, 0.4f, -5.7f, m),
-                          add_box(&f.scene, -1.0f, -1.0f, -12.0f, 1.0f, 1.0f, -11.0f, m)};
-    uint32_t beside = add_box(&f.scene, 6.5f, -0.5f, -12.0f, 7.5f, 0.5f, -11.0f, m);
-    check_configuration(&f, "umbra inside an umbra, 4 triangles per leaf", 0.1f, FN_SIMPLE, hidden, 2, &beside, 1);
+    /* The strict order (74 layers), then merged into at most 14 layers
+     * (docs/trim-regions.md, "Merging layers"): the same answer. */
+    const uint32_t max_layers[2] = {UINT32_MAX, 0};
+    for (int i = 0; i < 2; i++) {
+        fixture f = {.octree_cap = 4, .max_layers = max_layers[i]};
+        uint32_t m = constructed_scene(&f);
+        add_box(&f.scene, -2.0f, -1.5f, -4.2f, 2.0f, 1.5f, -4.0f, m);
+        add_box(&f.scene, -5.0f, -3.0f, -8.2f, 5.0f, 3.0f, -8.0f, m);
+        uint32_t hidden[2] = {add_box(&f.scene, -0.4f, -0.4f, -6.5f, 0.4f, 0.4f, -5.7f, m),
+                              add_box(&f.scene, -1.0f, -1.0f, -12.0f, 1.0f, 1.0f, -11.0f, m)};
+        uint32_t beside = add_box(&f.scene, 6.5f, -0.5f, -12.0f, 7.5f, 0.5f, -11.0f, m);
+        check_configuration(&f, i == 0 ? "umbra inside an umbra, 4 triangles per leaf"
+                                       : "umbra inside an umbra, 4 triangles per leaf, layers merged",
+                            0.1f, FN_SIMPLE, hidden, 2, &beside, 1);
+    }
 }
 
 /* A double-sided quad seen from behind past a box's edge: its back is
@@ -146,7 +153,7 @@ static void test_open_quad_past_a_slab_edge(void)
  * cone sample. */
 static void test_late_face_before_terminator(void)
 {
-    fixture f = {.octree_cap = 4};
+    fixture f = {.octree_cap = 4, .max_layers = UINT32_MAX}; /* the strict order */
     uint32_t m = constructed_scene(&f);
     add_box(&f.scene, -3.0f, -2.0f, -5.1f, -0.05f, 2.0f, -5.0f, m);
     const float floor[4][3] = {{-5.0f, -1.0f, -6.0f}, {-5.0f, -1.0f, -60.0f}, {5.0f, -1.0f, -60.0f}, {5.0f, -1.0f, -6.0f}};
@@ -165,7 +172,7 @@ static void test_late_face_before_terminator(void)
  * no sequence and was lost. */
 static void test_sliver_seen_from_behind(void)
 {
-    fixture f = {.octree_cap = 4};
+    fixture f = {.octree_cap = 4, .max_layers = UINT32_MAX}; /* the strict order */
     uint32_t m = constructed_scene(&f);
     add_box(&f.scene, -3.0f, -2.0f, -5.1f, -0.05f, 2.0f, -5.0f, m);
     const float x0 = -0.16f, x1 = -0.145f, y0 = -0.5f, y1 = 0.5f, z = -10.0f;
@@ -276,7 +283,7 @@ static void test_coincident_twins_across_near_plane(void)
  * (TV_PVS_CULLED_NUDGE puts a culled back behind a coincident front). */
 static void test_culled_twin_of_a_wall(void)
 {
-    fixture f = {.octree_cap = 4};
+    fixture f = {.octree_cap = 4, .max_layers = UINT32_MAX}; /* the strict order */
     uint32_t m = constructed_scene(&f);
     const float z = -4.0f, twin_z = z + 1e-5f;
     fx_quad_z(&f.scene, -2.0f, -1.5f, 2.0f, 1.5f, z, m);      /* faces v* */

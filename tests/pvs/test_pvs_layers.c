@@ -1,6 +1,8 @@
 /* Octree layers (P0 part 2): every frustum-visible leaf in exactly one layer,
- * front-to-back order along random rays from v*, earliest-layer triangle
- * assignment, cycle breaking on a non-octree pinwheel, and timing. */
+ * front-to-back order along random rays from v* (strict, or non-decreasing
+ * once merged), earliest-layer triangle assignment, merging as a coarsening
+ * of the strict order within its budget, cycle breaking on a non-octree
+ * pinwheel, and timing. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,7 +40,9 @@ static uint32_t locate(const pvs_octree* t, const float p[3])
     return pvs_octree_locate(t, cell[0], cell[1], cell[2]);
 }
 
-static void check_layers(const pvs_octree* t, const pvs_view* v, const pvs_layers* L, uint32_t* rng)
+/* `merged`: layers may repeat along a ray (non-decreasing) instead of
+ * strictly increasing. */
+static void check_layers(const pvs_octree* t, const pvs_view* v, const pvs_layers* L, bool merged, uint32_t* rng)
 {
     /* Each surviving leaf listed exactly once, in the layer it is assigned. */
     uint32_t* seen = calloc(t->leaf_count, sizeof *seen);
@@ -61,7 +65,8 @@ static void check_layers(const pvs_octree* t, const pvs_view* v, const pvs_layer
     TV_CHECK(L->cycles_broken == 0);
 
     /* Random rays from v* inside the frustum: the leaves passed have
-     * strictly increasing layers, and none of them was culled. */
+     * strictly increasing layers (non-decreasing when merged), and none of
+     * them was culled. */
     pvs_view_frame f = pvs_view_frame_make(v);
     float step = t->root_size / (float)(1u << t->max_depth) * 0.25f;
     uint32_t order_violations = 0, culled_on_ray = 0;
@@ -81,7 +86,8 @@ static void check_layers(const pvs_octree* t, const pvs_view* v, const pvs_layer
                 culled_on_ray++;
                 continue;
             }
-            if (prev != UINT32_MAX && L->leaf_layer[leaf] <= L->leaf_layer[prev])
+            if (prev != UINT32_MAX && (merged ? L->leaf_layer[leaf] < L->leaf_layer[prev]
+                                              : L->leaf_layer[leaf] <= L->leaf_layer[prev]))
                 order_violations++;
             prev = leaf;
         }
@@ -117,11 +123,54 @@ static void check_layers(const pvs_octree* t, const pvs_view* v, const pvs_layer
     free(seen);
 }
 
+/* The merged layers `M` coarsen the strict ones `S` of the same view: the
+ * same triangle sequence, each merged layer a run of consecutive strict
+ * ones, at most max_layers of them, each within the budget unless it is a
+ * single strict layer, and each as long as the budget allows (the next
+ * non-empty strict layer would not have fit). */
+static void check_merge(const pvs_octree* t, const pvs_layers* S, const pvs_layers* M, uint32_t max_layers)
+{
+    TV_CHECK(M->layers_unmerged == S->layer_count && S->layers_unmerged == S->layer_count);
+    TV_CHECK(M->tri_count == S->tri_count);
+    TV_CHECK(memcmp(M->tri_ids, S->tri_ids, S->tri_count * sizeof(uint32_t)) == 0);
+    TV_CHECK(M->layer_count <= max_layers && M->layer_count <= S->layer_count);
+    uint32_t not_a_run = 0, over_budget = 0, strict_of_prev = 0;
+    for (uint32_t i = 0; i < t->leaf_count; i++) {
+        if (S->leaf_layer[i] == PVS_LAYER_CULLED) {
+            not_a_run += M->leaf_layer[i] != PVS_LAYER_CULLED;
+            continue;
+        }
+        for (uint32_t j = 0; j < t->leaf_count; j++) {
+            if (S->leaf_layer[j] != PVS_LAYER_CULLED && S->leaf_layer[i] < S->leaf_layer[j])
+                not_a_run += M->leaf_layer[i] > M->leaf_layer[j];
+            if (S->leaf_layer[j] == S->leaf_layer[i])
+                not_a_run += M->leaf_layer[i] != M->leaf_layer[j];
+        }
+    }
+    for (uint32_t k = 0; k < M->layer_count; k++) {
+        uint32_t n = M->tri_offsets[k + 1] - M->tri_offsets[k], strict = 0;
+        for (uint32_t s = 0; s < S->layer_count; s++)
+            strict += S->tri_offsets[s] >= M->tri_offsets[k] && S->tri_offsets[s + 1] <= M->tri_offsets[k + 1] &&
+                      S->tri_offsets[s + 1] > S->tri_offsets[s];
+        over_budget += n > M->merge_budget && strict > 1;
+        /* the next layer's first non-empty strict layer would not have fit */
+        if (k + 1 < M->layer_count) {
+            uint32_t s = 0;
+            while (S->tri_offsets[s] < M->tri_offsets[k + 1] || S->tri_offsets[s + 1] == S->tri_offsets[s])
+                s++;
+            strict_of_prev += S->tri_offsets[s + 1] - M->tri_offsets[k] <= M->merge_budget && n > 0;
+        }
+    }
+    TV_CHECK(not_a_run == 0 && over_budget == 0 && strict_of_prev == 0);
+}
+
 static void test_random_octrees_and_views(void)
 {
     uint32_t rng = 12345;
     pvs_layers L = {0}; /* reused across octrees: exercises the arena growth */
+    pvs_layers M = {0};
     char err[256];
+    uint32_t merged_some = 0;
     for (uint32_t seed = 1; seed <= 6; seed++) {
         scn_scene s;
         pvs_test_soup(&s, 1500 * seed, 10.0f, 0.3f, seed);
@@ -130,12 +179,19 @@ static void test_random_octrees_and_views(void)
         TV_CHECK(pvs_octree_build(&d, &s, &t, err, sizeof err));
         for (int i = 0; i < 12; i++) {
             pvs_view v = random_view(&t, &rng, i % 3 == 2);
-            TV_CHECK(pvs_layers_build(&t, &v, &L, err, sizeof err));
-            check_layers(&t, &v, &L, &rng);
+            TV_CHECK(pvs_layers_build(&t, &v, PVS_LAYERS_UNMERGED, &L, err, sizeof err));
+            check_layers(&t, &v, &L, false, &rng);
+            uint32_t max_layers = 1 + (uint32_t)i % 6;
+            TV_CHECK(pvs_layers_build(&t, &v, max_layers, &M, err, sizeof err));
+            check_layers(&t, &v, &M, true, &rng);
+            check_merge(&t, &L, &M, max_layers);
+            merged_some += M.layer_count < L.layer_count;
         }
         pvs_octree_free(&t);
         pvs_test_scene_free(&s);
     }
+    TV_CHECK(merged_some > 0);
+    pvs_layers_free(&M);
     pvs_layers_free(&L);
     pvs_layers_free(&L); /* safe on a zeroed struct */
 }
@@ -170,7 +226,7 @@ static void test_pinwheel_cycle_is_broken(void)
                   .fov_y_deg = 170.0f, .near_dist = 0.1f, .far_dist = 10.0f};
     pvs_layers L = {0};
     char err[256];
-    TV_CHECK(pvs_layers_build(&t, &v, &L, err, sizeof err));
+    TV_CHECK(pvs_layers_build(&t, &v, PVS_LAYERS_UNMERGED, &L, err, sizeof err));
     TV_CHECK(L.leaves_visible == 5);
     TV_CHECK(L.cycles_broken >= 1);
     TV_CHECK(L.leaf_layer[0] == 0);
@@ -202,15 +258,15 @@ static void test_timing_200k(void)
             pvs_view v = random_view(&t, &rng, false);
             v.apex[1] = 0.5f + pvs_test_rand(&rng); /* standing among the boxes */
             v.forward[1] = 0.1f * v.forward[1];
-            TV_CHECK(pvs_layers_build(&t, &v, &L, err, sizeof err));
+            TV_CHECK(pvs_layers_build(&t, &v, 0, &L, err, sizeof err));
             ms[i] = L.ms;
             order[i] = L.order_ms;
-            layers += L.layer_count;
+            layers += L.layers_unmerged;
             visible += L.leaves_visible;
         }
         qsort(ms, 64, sizeof ms[0], cmp_double);
         qsort(order, 64, sizeof order[0], cmp_double);
-        printf("layers: %u leaves (cap %u), mean %u visible, mean %u layers: order median %.3f ms, "
+        printf("layers: %u leaves (cap %u), mean %u visible, mean %u layers before merging: order median %.3f ms, "
                "with triangle lists median %.3f ms, max %.3f ms\n",
                t.leaf_count, caps[c], visible / 64, layers / 64, order[32], ms[32], ms[63]);
         pvs_layers_free(&L);

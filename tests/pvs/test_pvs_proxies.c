@@ -63,7 +63,7 @@ static void test_sort_and_layers(void)
     pvs_view v = {.apex = {-3.0f, 0.5f, -3.0f}, .forward = {1.0f, 0.0f, 1.0f}, .up = {0, 1, 0},
                   .fov_y_deg = 90.0f, .aspect = 1.0f, .near_dist = 0.05f, .far_dist = 100.0f};
     pvs_layers L = {0};
-    TV_CHECK(pvs_layers_build(t, &v, &L, err, sizeof err));
+    TV_CHECK(pvs_layers_build(t, &v, 0, &L, err, sizeof err)); /* merged, as pvs_compute does */
     uint32_t faces = 0, misplaced = 0;
     for (uint32_t k = 0; k < L.layer_count; k++) {
         for (uint32_t i = L.tri_offsets[k]; i < L.tri_offsets[k + 1]; i++) {
