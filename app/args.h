@@ -39,18 +39,18 @@ typedef enum tv_args_result {
 #define TV_ARG_K(out) {"k", TV_ARG_INT, (out), "N", "tr: k-buffer slots per pixel and kind, >= 1 (default 16)"}
 #define TV_ARG_PVS_RES(name, out) {(name), TV_ARG_RES, (out), "WxH", "tr: PVS resolution (default 512x512)"}
 #define TV_ARG_FOV_PVS(out) {"fov-pvs", TV_ARG_FLOAT, (out), "DEG", "PVS FOV, square frustum (default 90)"}
-#define TV_ARG_MAX_LAYERS(out) {"max-layers", TV_ARG_INT, (out), "N", "tr: merge octree layers into at most N (default 14; 0: never)"}
+#define TV_ARG_MAX_LAYERS(out) {"max-layers", TV_ARG_INT, (out), "N", "tr: merge octree layers into at most N (default -1: 14 on a GPU, never on a CPU device; 0: never)"}
 #define TV_ARG_SAMPLES(out) {"samples", TV_ARG_INT, (out), "N", "views per viewcell of the sampled ground truth (default 200)"}
 
 /* The defaults those rows state. */
 #define TV_ARGS_DEFAULT_K 16
 #define TV_ARGS_DEFAULT_SAMPLES 200
-#define TV_ARGS_DEFAULT_MAX_LAYERS 14
+#define TV_ARGS_DEFAULT_MAX_LAYERS (-1)
 
-/* pvs_desc.max_layers for a --max-layers value (>= 0; 0: the strict order). */
+/* pvs_desc.max_layers for a --max-layers value (>= -1; -1: the device's default, 0: the strict order). */
 static inline uint32_t tv_arg_max_layers(int n)
 {
-    return n > 0 ? (uint32_t)n : UINT32_MAX;
+    return n > 0 ? (uint32_t)n : n == 0 ? UINT32_MAX : 0;
 }
 
 /* When !ok, prints the one-line error "--NAME VALUE: must be REQUIREMENT"

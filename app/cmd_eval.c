@@ -112,7 +112,7 @@ static bool validate(const eval_opts* o, pvs_method_desc* md)
                                    .max_layers = tv_arg_max_layers(o->max_layers)},
                             .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples};
     if (!tv_arg_require("k", o->k, o->k >= 1, ">= 1") ||
-        !tv_arg_require("max-layers", o->max_layers, o->max_layers >= 0, ">= 0"))
+        !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1"))
         return false;
     if ((!o->path && isnan(o->pos[0])) || o->every < 1 || o->samples < 1 || !(o->delta >= 0.0f) ||
         !pvs_method_from_name(o->method, &md->kind)) {

@@ -72,7 +72,7 @@ int tv_cmd_pvs(int argc, char** argv)
     pred_viewcell vc;
     if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
         !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0") ||
-        !tv_arg_require("max-layers", max_layers, max_layers >= 0, ">= 0"))
+        !tv_arg_require("max-layers", max_layers, max_layers >= -1, ">= -1"))
         return 2;
     if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc)) {
         tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "

@@ -319,7 +319,7 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     ctx->coop_sort_min = d.coop_sort_min ? d.coop_sort_min : cpu ? PVS_NEVER_COOP : PVS_DEFAULT_COOP_SORT_MIN;
     ctx->coop_width = coop_width(rnd);
     ctx->near_m = d.near_m > 0.0f ? d.near_m : PVS_DEFAULT_NEAR;
-    ctx->max_layers = d.max_layers;
+    ctx->max_layers = d.max_layers ? d.max_layers : cpu ? PVS_LAYERS_UNMERGED : PVS_LAYERS_DEFAULT_MAX;
     ctx->triangle_count = scene->triangle_count;
     ctx->max_proxies = max_proxies;
     scn_scene statics = *scene; /* the octree holds the static triangles only */

@@ -35,8 +35,9 @@ typedef struct pvs_desc {
     uint32_t octree_cap;             /* triangles per octree leaf; 0: PVS_OCTREE_DEFAULT_CAP */
     uint32_t octree_depth;           /* 0: PVS_OCTREE_DEFAULT_DEPTH */
     uint32_t max_layers;             /* consecutive octree layers are merged into at most this many
-                                        (docs/trim-regions.md, "Merging layers"); 0: 14;
-                                        UINT32_MAX: the strict order, unmerged */
+                                        (docs/trim-regions.md, "Merging layers"); 0: 14 on a GPU,
+                                        the strict order on a CPU device (there merging buys no time
+                                        and costs PVS size); UINT32_MAX: the strict order */
     float near_m;                    /* near plane distance from v*; 0: 0.01 */
     uint32_t coop_sort_min;          /* P3 sorts trim sequences of at least this many entries with a
                                         subgroup-wide workgroup per pixel (bitonic), shorter ones per

@@ -70,7 +70,7 @@ static void test_occluders_across_layers(void)
 {
     /* The strict order (74 layers), then merged into at most 14 layers
      * (docs/trim-regions.md, "Merging layers"): the same answer. */
-    const uint32_t max_layers[2] = {UINT32_MAX, 0};
+    const uint32_t max_layers[2] = {UINT32_MAX, PVS_LAYERS_DEFAULT_MAX};
     for (int i = 0; i < 2; i++) {
         fixture f = {.octree_cap = 4, .max_layers = max_layers[i]};
         uint32_t m = constructed_scene(&f);
