@@ -14,6 +14,8 @@ const char* scn_builtin_help(void)
            "  builtin:city      streets and buildings; keys: seed=<u64> (default 1),\n"
            "                    tris=<10000..16000000> target triangles (default 150000)\n"
            "  builtin:interior  rooms, corridor, doorways, columns; keys: seed=<u64>\n"
+           "  builtin:house     two-storey house with windows, doors, stairs and furniture\n"
+           "                    (detailed, CAD/BIM-like parts); keys: seed=<u64>\n"
            "  builtin:unit      wall, boxes and ground with analytic visibility; no keys\n"
            "Examples: builtin:city?seed=3&tris=500000  builtin:interior?seed=2\n";
 }
@@ -91,6 +93,8 @@ bool scn_load_builtin(const char* spec, scn_scene* out, char* err, size_t err_si
         scn_gen_city(&b, p.seed, (uint32_t)p.tris);
     } else if (name_len == 8 && strncmp(name, "interior", 8) == 0 && !p.has_tris) {
         scn_gen_interior(&b, p.seed);
+    } else if (name_len == 5 && strncmp(name, "house", 5) == 0 && !p.has_tris) {
+        scn_gen_house(&b, p.seed);
     } else if (name_len == 4 && strncmp(name, "unit", 4) == 0 && !p.has_tris && !p.has_seed) {
         scn_gen_unit(&b);
     } else {

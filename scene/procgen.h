@@ -62,5 +62,6 @@ void scn_gen_box(scn_builder* b, const float lo[3], const float hi[3], unsigned 
 void scn_gen_city(scn_builder* b, uint64_t seed, uint32_t tris);
 void scn_gen_interior(scn_builder* b, uint64_t seed);
 void scn_gen_unit(scn_builder* b);
+void scn_gen_house(scn_builder* b, uint64_t seed);
 
 #endif
