@@ -38,7 +38,7 @@ static bool _in_sponza_atrium(const double p[3])
 
 static void test_bundled(void)
 {
-    TV_CHECK(pred_bundled_path_count() == 9);
+    TV_CHECK(pred_bundled_path_count() == 10);
     for (int i = 0; i < pred_bundled_path_count(); i++) {
         const pred_bundled_path* b = pred_bundled_path_get(i);
         char file[1024], err[512];
