@@ -313,17 +313,28 @@ static uint32_t with_reason(const pvs_result* r, uint32_t reason, bool* all_expl
  * each id: the builtin:unit wall facing v* is in its visibility buffer (P4)
  * and nothing there overflows; in the city ids name the overflow policy
  * exactly when pixels overflowed, and far more of them with k = 1 (almost
- * every pixel overflows) than with k = 32 (a few dozen do). */
+ * every pixel overflows) than with k = 32 (a few dozen do). The identity is
+ * checked where nothing overflows: the overflow policy's outputs vary run to
+ * run on lavapipe (docs/journal/2026-12-02-bench-sharding.md). */
 static void test_explain_names_the_rules(void)
 {
+    pvs_viewcell vc = viewcell(0.0f, 1.5f, 0.0f, 0.1f);
+    pvs_result r;
+    fixture plain = {0};
+    load(&plain, "builtin:unit", 0);
+    TV_CHECK(compute(&plain, &vc, &r) && r.reasons == NULL);
+    uint32_t n = r.count, ids[64];
+    TV_CHECK(n <= 64);
+    memcpy(ids, r.ids, sizeof(uint32_t) * (n <= 64 ? n : 64));
+    fixture_close(&plain);
+
     fixture f = {.explain = true};
     load(&f, "builtin:unit", 0);
     uint32_t w0, wn;
     TV_CHECK(scn_unit_object("wall", &w0, &wn));
-    pvs_result r;
-    pvs_viewcell vc = viewcell(0.0f, 1.5f, 0.0f, 0.1f);
     bool explained = true;
     TV_CHECK(compute(&f, &vc, &r) && r.reasons != NULL);
+    TV_CHECK(r.count == n && n <= 64 && memcmp(r.ids, ids, sizeof(uint32_t) * n) == 0);
     uint32_t wall_vis = 0;
     for (uint32_t i = 0; r.reasons && i < r.count; i++)
         wall_vis += r.ids[i] >= w0 && r.ids[i] < w0 + wn && (r.reasons[i] & TV_REASON_VIS);
@@ -331,12 +342,6 @@ static void test_explain_names_the_rules(void)
     fixture_close(&f);
 
     vc = viewcell(0.0f, 1.7f, 30.0f, 0.1f);
-    fixture plain = {0};
-    load(&plain, "builtin:city?tris=20000", 1);
-    TV_CHECK(compute(&plain, &vc, &r) && r.reasons == NULL);
-    uint32_t n = r.count, *ids = malloc(sizeof(uint32_t) * (n ? n : 1));
-    memcpy(ids, r.ids, sizeof(uint32_t) * n);
-    fixture_close(&plain);
     const uint32_t ks[2] = {1, 32};
     uint32_t overflowed[2] = {0, 0};
     for (int i = 0; i < 2; i++) {
@@ -347,12 +352,9 @@ static void test_explain_names_the_rules(void)
         printf("  k = %u: %u of %u ids output by the overflow policy, %llu overflowing pixels\n", ks[i],
                overflowed[i], r.count, (unsigned long long)r.stats.overflow_pixels);
         TV_CHECK(explained && (overflowed[i] > 0) == (r.stats.overflow_pixels > 0));
-        if (ks[i] == 1)
-            TV_CHECK(r.count == n && memcmp(r.ids, ids, sizeof(uint32_t) * n) == 0);
         fixture_close(&f);
     }
     TV_CHECK(overflowed[0] > 4 * overflowed[1]);
-    free(ids);
 }
 
 int main(void)
