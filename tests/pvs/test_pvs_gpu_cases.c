@@ -315,7 +315,7 @@ static uint32_t with_reason(const pvs_result* r, uint32_t reason, bool* all_expl
  * exactly when pixels overflowed, and far more of them with k = 1 (almost
  * every pixel overflows) than with k = 32 (a few dozen do). The identity is
  * checked where nothing overflows: the overflow policy's outputs vary run to
- * run on lavapipe (docs/journal/2026-12-02-bench-sharding.md). */
+ * run on lavapipe (docs/journal/2026-12-02-bench-at-scale.md). */
 static void test_explain_names_the_rules(void)
 {
     pvs_viewcell vc = viewcell(0.0f, 1.5f, 0.0f, 0.1f);
