@@ -37,7 +37,7 @@ static const pred_bundled_path k_paths[] = {
       .description = "from the yard through the front door, along the hall, through the living room and the "
                      "kitchen, back along the hall into the dining room",
       .waypoint_count = 7,
-      .waypoints = {{-0.75, 7.0}, {-0.75, -2.25}, {-3.25, -2.25}, {-3.25, 2.25}, {-0.75, 2.25}, {-0.75, -3.25},
+      .waypoints = {{-0.75, 8.5}, {-0.75, -2.25}, {-3.25, -2.25}, {-3.25, 2.25}, {-0.75, 2.25}, {-0.75, -3.25},
                     {3.25, -3.25}}}},
     {"sponza-walk.csv", "walk",
      {.kind = PRED_SYNTH_WALK, .seed = 7, .scene = SPONZA,

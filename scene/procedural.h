@@ -36,7 +36,7 @@
  *   bottom at z = 2.2, up towards -z). Doors 1.0 x 2.1 m; the front door
  *   x in [-1.35, -0.15] in the north wall. The bundled walk's lanes hold no
  *   geometry within 0.3 m of the eye (1.7 m): x = -0.75 from the yard
- *   (z = 7) to z = -2.25, z = -2.25 to x = -3.25, x = -3.25 to z = 2.25
+ *   (z = 8.5) to z = -2.25, z = -2.25 to x = -3.25, x = -3.25 to z = 2.25
  *   (through the living-kitchen door), z = 2.25 back to x = -0.75,
  *   x = -0.75 to z = -3.25 and z = -3.25 to x = 3.25 (the doors on it are
  *   always open). Furniture

@@ -187,7 +187,7 @@ static void test_house_contract(void)
     }
     TV_CHECK(degenerate == 0);
     /* the walk's lanes, at knee, eye and head height (1.7 m eye, 0.3 m clearance) */
-    const float lanes[][4] = { { -0.75f, 7.0f, -0.75f, -2.25f }, { -0.75f, -2.25f, -3.25f, -2.25f },
+    const float lanes[][4] = { { -0.75f, 8.5f, -0.75f, -2.25f }, { -0.75f, -2.25f, -3.25f, -2.25f },
                                { -3.25f, -2.25f, -3.25f, 2.25f }, { -3.25f, 2.25f, -0.75f, 2.25f },
                                { -0.75f, 2.25f, -0.75f, -3.25f }, { -0.75f, -3.25f, 3.25f, -3.25f } };
     uint32_t blocked = 0;
