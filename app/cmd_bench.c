@@ -26,7 +26,7 @@
 #define MAX_LIST 32
 #define DEFAULT_CELLS 24
 #define DEFAULT_CELLS_TEXT "24"
-#define DEFAULT_SCENES "builtin:city,sponza,oa:oasago2,oa:oa_dm5,oa:czest2ctf,oa:ctf_inyard,oa:oacmpdm9,oa:pul1ctf"
+#define DEFAULT_SCENES "builtin:city,builtin:house,sponza,oa:oasago2,oa:oa_dm5,oa:czest2ctf,oa:ctf_inyard,oa:oacmpdm9,oa:pul1ctf"
 
 typedef struct bench_opts {
     const char *scenes, *deltas, *methods, *pos, *out, *shard;
@@ -383,7 +383,7 @@ int tv_cmd_bench(int argc, char** argv)
                     .max_cells = DEFAULT_CELLS, .samples = 50, .res = {320, 180}, .k = TV_ARGS_DEFAULT_K,
                     .max_layers = TV_ARGS_DEFAULT_MAX_LAYERS};
     const tv_arg args[] = {
-        {"scenes", TV_ARG_STRING, &o.scenes, "S,S..", "scenes (default builtin:city, sponza and the six oa: levels)"},
+        {"scenes", TV_ARG_STRING, &o.scenes, "S,S..", "scenes (default builtin:city, builtin:house, sponza and the six oa: levels)"},
         {"deltas", TV_ARG_STRING, &o.deltas, "M,M..", "viewcell radii, ascending (default 0.05,0.1,0.2,0.3)"},
         {"methods", TV_ARG_STRING, &o.methods, "M,M..", "methods (default tr,sas,frompoint,gt,q3vis; q3vis on oa: only)"},
         {"path-every", TV_ARG_INT, &o.every, "N",

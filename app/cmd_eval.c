@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "eval_common.h"
 #include "eval_images.h"
+#include "explain.h"
 #include "log.h"
 
 #include <math.h>
@@ -22,9 +23,11 @@ typedef struct eval_opts {
     float delta, fov, fov_pvs;
     int every, samples, k, max_cells, max_layers;
     unsigned res[2], pvs_res[2];
+    bool explain;
 } eval_opts;
 
-static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval_cell* cells, int n, bool interrupted)
+static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval_cell* cells, int n, bool interrupted,
+                       const tv_explain* ex)
 {
     char name[4200];
     snprintf(name, sizeof name, "%s/eval.json", o->out);
@@ -41,6 +44,10 @@ static bool write_json(const eval_opts* o, const char* scene_name, const tv_eval
     fprintf(f, "  \"sample_res\": [%u, %u], \"pvs_res\": [%u, %u],\n", o->res[0], o->res[1], o->pvs_res[0],
             o->pvs_res[1]);
     tv_eval_json_metrics(f, &mean, "  ");
+    if (ex) {
+        fprintf(f, ",\n");
+        tv_explain_json(f, ex, "  ");
+    }
     fprintf(f, ",\n  \"viewcells\": [\n");
     for (int i = 0; i < n; i++) {
         const pred_viewcell* vc = &cells[i].vc;
@@ -96,20 +103,24 @@ static tv_args_result parse(eval_opts* o, int argc, char** argv)
         TV_ARG_MAX_LAYERS(&o->max_layers),
         TV_ARG_METHOD(&o->method),
         {"out", TV_ARG_STRING, &o->out, "DIR", "output folder (default out/eval)"},
+        {"explain", TV_ARG_FLAG, &o->explain, NULL, "tr: attribute every false positive to the rule that output it"},
     };
     const char* summary =
         "Measures a PVS method against sampled ground truth (the paper's section 6): PVS and GT size, FP and\n"
         "FN rates, false-negative pixels per view (FNG), PSNR of PVS renders against full renders, timings.\n"
         "Writes DIR/eval.json, DIR/fig1_overview.png and DIR/fig1_eye.png (visible shaded, false positives\n"
-        "blue, rest grey) and DIR/fn_worst.png (false-negative pixels red in the worst view). Ctrl-C stops\n"
-        "after the current viewcell; eval.json then covers the finished ones.";
+        "blue, rest grey) and DIR/fn_worst.png (false-negative pixels red in the worst view). With --explain\n"
+        "it prints and records which PVS rule output each false positive and draws them in the rule's colour\n"
+        "(DIR/explain_overview.png, DIR/explain_eye.png; docs/evaluation.md). Ctrl-C stops after the current\n"
+        "viewcell; eval.json then covers the finished ones.";
     return tv_args_parse("eval", summary, args, (int)(sizeof args / sizeof args[0]), argc, argv);
 }
 
 static bool validate(const eval_opts* o, pvs_method_desc* md)
 {
     *md = (pvs_method_desc){.tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k,
-                                   .max_layers = tv_arg_max_layers(o->max_layers)},
+                                   .max_layers = tv_arg_max_layers(o->max_layers),
+                                   .explain = o->explain},
                             .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples};
     if (!tv_arg_require("k", o->k, o->k >= 1, ">= 1") ||
         !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1"))
@@ -118,6 +129,10 @@ static bool validate(const eval_opts* o, pvs_method_desc* md)
         !pvs_method_from_name(o->method, &md->kind)) {
         tv_log(TV_LOG_ERROR, "need --pos or --path, a known --method, --every >= 1, "
                "--samples >= 1 and --delta >= 0 (see trimvr eval --help)");
+        return false;
+    }
+    if (o->explain && md->kind != PVS_METHOD_TR) {
+        tv_log(TV_LOG_ERROR, "--explain: only --method tr records the rules behind its output (not %s)", o->method);
         return false;
     }
     return true;
@@ -144,6 +159,7 @@ static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, c
     uint8_t* mask = calloc(tris ? tris : 1, 1);
     uint8_t* gt = calloc(tris ? tris : 1, 1);
     tv_eval_images worst = {0};
+    tv_explain ex = {0};
     pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1],
                         .pose = tv_app_scene_pose, .pose_user = s};
     if (!m || !mask || !gt) {
@@ -156,7 +172,8 @@ static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, c
         if (!tv_eval_cell_run(m, s->ctx, &s->scene, s->gpu, &ed, o->fov, &cells[done], mask, gt, err, sizeof err)) {
             tv_log(TV_LOG_ERROR, "viewcell %d: %s", done, err);
             status = 1;
-        } else if (!tv_eval_images_keep_worst(&worst, &cells[done].vc, &cells[done].m, mask, gt, tris)) {
+        } else if (!tv_eval_images_keep_worst(&worst, &cells[done].vc, &cells[done].m, mask, gt, tris) ||
+                   (o->explain && !tv_explain_add(&ex, &cells[done].vc, pvs_method_reasons(m), mask, gt, tris))) {
             tv_log(TV_LOG_ERROR, "out of memory");
             status = 1;
         } else {
@@ -169,8 +186,10 @@ static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, c
         status = tv_interrupt_status(sig);
     }
     err[0] = '\0';
-    if (status == 0 && (!write_json(o, spec, cells, done, sig != 0) ||
-                        !tv_eval_images_write(&worst, s->ctx, s->gpu, &s->scene, &ed, o->out, err, sizeof err))) {
+    if (status == 0 && (!write_json(o, spec, cells, done, sig != 0, o->explain ? &ex : NULL) ||
+                        !tv_eval_images_write(&worst, s->ctx, s->gpu, &s->scene, &ed, o->out, err, sizeof err) ||
+                        (o->explain && !tv_explain_write_pictures(&ex, s->ctx, s->gpu, &s->scene, o->res[0],
+                                                                  o->res[1], o->out, err, sizeof err)))) {
         if (err[0])
             tv_log(TV_LOG_ERROR, "%s", err);
         status = 1;
@@ -180,9 +199,12 @@ static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, c
                done, n, o->out);
         status = tv_interrupt_status(sig);
     } else if (status == 0) {
+        if (o->explain)
+            tv_explain_print(stdout, &ex, spec, o->delta);
         printf("trimvr eval: %d viewcell(s) of %s with %s -> %s/eval.json\n", n, spec, o->method, o->out);
     }
     tv_eval_images_free(&worst);
+    tv_explain_free(&ex);
     free(mask);
     free(gt);
     pvs_method_destroy(m);

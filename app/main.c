@@ -28,7 +28,7 @@ static void usage(FILE* f)
     for (int i = 0; i < k_command_count; i++)
         fprintf(f, "  %-12s %s\n", k_commands[i].name, k_commands[i].summary);
     fprintf(f, "\nRun 'trimvr <command> --help' for a command's options.\n"
-               "Scenes: a .gltf/.glb file or builtin:city, builtin:interior, builtin:unit.\n");
+               "Scenes: a .gltf/.glb file or builtin:city, builtin:interior, builtin:house, builtin:unit.\n");
 }
 
 int main(int argc, char** argv)

@@ -70,6 +70,13 @@ static void look_camera(const double pos[3], const double forward[3], const doub
     cam->far_m = 2000.0f;
 }
 
+void tv_viewcell_centre_camera(const pred_viewcell* vc, float aspect, rnd_camera* cam)
+{
+    double p[3] = {vc->v0[0], vc->v0[1], vc->v0[2]}, f[3] = {vc->forward[0], vc->forward[1], vc->forward[2]},
+           u[3] = {vc->up[0], vc->up[1], vc->up[2]};
+    look_camera(p, f, u, rnd_fov_y_from_x(fminf(vc->fov_pvs_deg, 170.0f), aspect), cam);
+}
+
 void tv_overview_camera(const scn_scene* scene, const double v0[3], const double forward[3], const double up[3],
                         rnd_camera* cam)
 {
@@ -106,9 +113,8 @@ bool tv_eval_images_write(const tv_eval_images* w, rnd_context* ctx, const rnd_g
     float aspect = (float)width / (float)height;
     char file[4200];
     if (ok) { /* Figure 1 from the viewcell centre, with the PVS FOV: what the PVS was computed for */
-        double p[3] = {vc->v0[0], vc->v0[1], vc->v0[2]};
         rnd_camera cam;
-        look_camera(p, f, u, rnd_fov_y_from_x(fminf(vc->fov_pvs_deg, 170.0f), aspect), &cam);
+        tv_viewcell_centre_camera(vc, aspect, &cam);
         snprintf(file, sizeof file, "%s/fig1_eye.png", out_dir);
         ok = render_classified(w, ctx, target, gpu, &cam, COLOUR_FIGURE1, file, rgba, ids, rgb, err, err_size);
     }

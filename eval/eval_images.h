@@ -32,6 +32,10 @@ bool tv_eval_images_write(const tv_eval_images* w, rnd_context* ctx, const rnd_g
 
 void tv_eval_images_free(tv_eval_images* w);
 
+/* Figure 1's camera at the viewcell centre v0, along its axis, with the PVS
+ * FOV across the image's width (capped at 170 degrees). */
+void tv_viewcell_centre_camera(const pred_viewcell* vc, float aspect, rnd_camera* cam);
+
 /* The overview camera of Figure 1: behind and above v0 (by a distance that
  * grows with the scene, 3 to 25 m), looking down at the region in front of
  * it along `forward`; 60 degrees vertical FOV. */

@@ -80,7 +80,9 @@ pvs_method* pvs_method_create(const pvs_method_desc* desc, rnd_context* rnd, con
     m->gpu = gpu;
     m->triangle_count = scene->triangle_count;
     m->mask = calloc(scene->triangle_count ? scene->triangle_count : 1, 1);
-    bool ok = m->mask != NULL;
+    bool explain = desc->kind == PVS_METHOD_TR && desc->tr.explain;
+    m->reasons = explain ? calloc(scene->triangle_count ? scene->triangle_count : 1, sizeof(uint32_t)) : NULL;
+    bool ok = m->mask != NULL && (!explain || m->reasons);
     if (!ok)
         snprintf(err, err_size, "pvs method: out of memory");
     if (ok && m->ops->renders) {
@@ -110,7 +112,13 @@ void pvs_method_destroy(pvs_method* m)
         rnd_target_destroy(m->rnd, m->target);
     free(m->pixels);
     free(m->mask);
+    free(m->reasons);
     free(m);
+}
+
+const uint32_t* pvs_method_reasons(const pvs_method* m)
+{
+    return m->reasons;
 }
 
 pvs_method_kind pvs_method_kind_of(const pvs_method* m)
@@ -186,6 +194,8 @@ bool pvs_method_compute(pvs_method* m, const pvs_request* in, uint32_t** ids, ui
     if (!(req.eye_fov_h_deg > 0.0f))
         req.eye_fov_h_deg = req.vc.fov_target_deg;
     memset(m->mask, 0, m->triangle_count);
+    if (m->reasons && !m->joining)
+        memset(m->reasons, 0, sizeof(uint32_t) * m->triangle_count);
     uint32_t* list = NULL;
     uint32_t n = 0;
     if (!m->ops->compute(m, &req, &list, &n, &st, err, err_size))

@@ -106,6 +106,12 @@ pvs_method_kind pvs_method_kind_of(const pvs_method* m);
 bool pvs_method_compute(pvs_method* m, const pvs_request* req, uint32_t** ids, uint32_t* count,
                         pvs_method_stats* stats, char* err, size_t err_size);
 
+/* tr created with desc.tr.explain: per triangle, the TV_REASON_* bits
+ * (shaders/pvs_shared.h) of the rules that put it in the last PVS computed
+ * (ORed over the frusta of a multi-frustum viewcell; 0: not in it). NULL for
+ * other methods and without explain. Owned by the method. */
+const uint32_t* pvs_method_reasons(const pvs_method* m);
+
 /* The union over the frusta of req->vc (pred_viewcell_frustum), one
  * pvs_method_compute each; stats->frusta says how many. */
 bool pvs_method_compute_frusta(pvs_method* m, const pvs_request* req, uint32_t** ids, uint32_t* count,

@@ -35,6 +35,8 @@ struct pvs_method {
     rnd_target* target;       /* gt, sas, frompoint: desc.width x desc.height */
     uint32_t* pixels;         /* id read-back of target */
     void* impl;               /* the method's own state */
+    uint32_t* reasons;        /* tr with explain: triangle_count rule masks (pvs_method_reasons) */
+    bool joining;             /* inside pvs_method_compute_frusta: reasons accumulate */
 };
 
 /* Full-scene id render from `cam` into m->target; marks every id seen in m->mask. */

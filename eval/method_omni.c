@@ -20,6 +20,9 @@ bool pvs_method_compute_frusta(pvs_method* m, const pvs_request* req, uint32_t**
     }
     pvs_method_stats sum = {0};
     bool ok = true;
+    if (m->reasons)
+        memset(m->reasons, 0, sizeof(uint32_t) * m->triangle_count);
+    m->joining = true;
     for (int i = 0; ok && i < req->vc.frusta; i++) {
         pvs_request one = *req;
         pred_viewcell_frustum(&req->vc, i, &one.vc);
@@ -34,6 +37,7 @@ bool pvs_method_compute_frusta(pvs_method* m, const pvs_request* req, uint32_t**
         sum.views += st.views;
         sum.tr = st.tr; /* the last frustum's phases: they do not add up across frusta */
     }
+    m->joining = false;
     uint32_t n = 0;
     for (uint32_t t = 0; ok && t < m->triangle_count; t++)
         n += seen[t];

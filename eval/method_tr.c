@@ -31,6 +31,8 @@ static bool _compute(pvs_method* m, const pvs_request* req, uint32_t** ids, uint
         return false;
     }
     memcpy(*ids, r.ids, (size_t)r.count * sizeof(uint32_t));
+    for (uint32_t i = 0; m->reasons && i < r.count; i++)
+        m->reasons[r.ids[i]] |= r.reasons[i];
     *count = r.count;
     stats->tr = r.stats;
     return true;

@@ -32,6 +32,13 @@ static const pred_bundled_path k_paths[] = {
      {.kind = PRED_SYNTH_LOOKAROUND, .seed = 6, .scene = "builtin:interior", .base_yaw_deg = 90.0,
       .description = "seated in the corridor at x=0 facing -x, fast head sweeps",
       .waypoint_count = 1, .waypoints = {{0.0, 0.0}}}},
+    {"house-walk.csv", "walk",
+     {.kind = PRED_SYNTH_WALK, .seed = 10, .scene = "builtin:house",
+      .description = "from the yard through the front door, along the hall, through the living room and the "
+                     "kitchen, back along the hall into the dining room",
+      .waypoint_count = 7,
+      .waypoints = {{-0.75, 8.5}, {-0.75, -2.25}, {-3.25, -2.25}, {-3.25, 2.25}, {-0.75, 2.25}, {-0.75, -3.25},
+                    {3.25, -3.25}}}},
     {"sponza-walk.csv", "walk",
      {.kind = PRED_SYNTH_WALK, .seed = 7, .scene = SPONZA,
       .description = "walk a loop around the atrium floor between the column rows",

@@ -100,7 +100,8 @@ static void write_view(pvs_context* ctx, const pvs_viewcell* vc, const rnd_camer
                       .width = ctx->width,
                       .height = ctx->height,
                       .k = ctx->k,
-                      .triangle_count = ctx->triangle_count};
+                      .triangle_count = ctx->triangle_count,
+                      .explain = ctx->explain};
     rnd_camera_view_proj(cam, v->aspect, g.view_proj);
     for (int i = 0; i < 3; i++) {
         g.apex[i] = v->apex[i];
@@ -411,12 +412,22 @@ static bool compact(pvs_context* ctx, pvs_result* out, char* err, size_t err_siz
         return false;
     }
     ctx->result = ids;
+    uint32_t* reasons = ctx->explain ? realloc(ctx->reasons, sizeof(uint32_t) * (count ? count : 1)) : NULL;
+    if (ctx->explain && !reasons) {
+        snprintf(err, err_size, "pvs_compute: out of memory for %u reasons", count);
+        return false;
+    }
+    ctx->reasons = ctx->explain ? reasons : NULL;
     uint32_t n = 0;
     for (uint32_t t = 0; t < ctx->triangle_count; t++) {
-        if (flags[t])
+        if (flags[t]) {
+            if (reasons)
+                reasons[n] = flags[t];
             ids[n++] = t;
+        }
     }
     out->ids = ids;
+    out->reasons = reasons;
     out->count = count;
     return true;
 }

@@ -316,6 +316,7 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     ctx->k = d.k ? d.k : PVS_DEFAULT_K;
     ctx->grid = tile_grid(ctx, d.max_tile_pixels);
     bool cpu = rnd->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    ctx->explain = d.explain;
     ctx->coop_sort_min = d.coop_sort_min ? d.coop_sort_min : cpu ? PVS_NEVER_COOP : PVS_DEFAULT_COOP_SORT_MIN;
     ctx->coop_width = coop_width(rnd);
     ctx->near_m = d.near_m > 0.0f ? d.near_m : PVS_DEFAULT_NEAR;
@@ -373,6 +374,7 @@ void pvs_destroy(pvs_context* ctx)
     pvs_proxy_sort_free(&ctx->proxy_sort);
     pvs_octree_free(&ctx->octree);
     free(ctx->result);
+    free(ctx->reasons);
     free(ctx->per_layer);
     free(ctx->proxy_always);
     free(ctx);

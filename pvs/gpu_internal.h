@@ -24,11 +24,13 @@ typedef struct pvs_view_gpu {
     float near_dist, delta, focal_px, max_width;      /* max_width: clamp of infinite trim widths */
     uint32_t width, height, k, triangle_count;
     uint32_t tile_x, tile_y, tile_w, tile_h; /* rewritten per tile by the command buffer */
+    uint32_t explain, pad[3];                /* pvs_desc.explain */
 } pvs_view_gpu;
 _Static_assert(offsetof(pvs_view_gpu, apex) == 64 && offsetof(pvs_view_gpu, up) == 112 &&
                    offsetof(pvs_view_gpu, tan_half_x) == 128 && offsetof(pvs_view_gpu, near_dist) == 144 &&
                    offsetof(pvs_view_gpu, width) == 160 &&
-                   offsetof(pvs_view_gpu, tile_x) == 176 && sizeof(pvs_view_gpu) == 192,
+                   offsetof(pvs_view_gpu, tile_x) == 176 && offsetof(pvs_view_gpu, explain) == 192 &&
+                   sizeof(pvs_view_gpu) == 208,
                "pvs_view_gpu must match pvs_view_buf's std430 layout in pvs_common.glsl");
 
 /* Push constants of every PVS pipeline (mirrors pvs_common.glsl). */
@@ -80,6 +82,8 @@ struct pvs_context {
     VkPipeline pipelines[PVS_PIPE_COUNT];
 
     uint32_t* result;           /* sorted ids of the last computation */
+    uint32_t* reasons;          /* explain: their TV_REASON_* masks, parallel to result */
+    bool explain;               /* pvs_desc.explain */
     pvs_layer_stats* per_layer; /* its per-layer statistics, layer_capacity entries */
 };
 

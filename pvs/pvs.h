@@ -47,6 +47,8 @@ typedef struct pvs_desc {
                                         (pvs/tiles.h; per-pixel memory follows the tile); 0: 512 x 512;
                                         lowered to what maxStorageBufferRange allows */
     uint32_t max_proxies;            /* most proxies one pvs_compute_dynamic takes; 0: 1024 */
+    bool explain;                    /* record which rules output each triangle (pvs_result.reasons);
+                                        costs an atomic per output instead of a store */
 } pvs_desc;
 
 /* The apex may lie at most pvs_max_apex_offset(near_m) behind v0, that is
@@ -103,6 +105,9 @@ typedef struct pvs_result {
     /* Sorted, unique triangle ids. Owned by the context: valid until the next
      * pvs_compute or pvs_destroy on it (copy them to keep them longer). */
     const uint32_t* ids;
+    /* pvs_desc.explain only (else NULL): per id, the OR of the TV_REASON_*
+     * bits (shaders/pvs_shared.h) of the rules that output it; owned alike. */
+    const uint32_t* reasons;
     uint32_t count;
     pvs_stats stats;
 } pvs_result;

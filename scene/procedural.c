@@ -16,6 +16,8 @@ const char* scn_builtin_help(void)
            "                    movers=<0..10000> vehicles and pedestrians on the streets (default 0)\n"
            "  builtin:interior  rooms, corridor, doorways, columns; keys: seed=<u64>,\n"
            "                    movers=<0..10000> swinging doors, carts, objects crossing rooms (default 0)\n"
+           "  builtin:house     two-storey house with windows, doors, stairs and furniture\n"
+           "                    (detailed, CAD/BIM-like parts); keys: seed=<u64>\n"
            "  builtin:unit      wall, boxes and ground with analytic visibility; no keys\n"
            "Examples: builtin:city?seed=3&tris=500000  builtin:interior?seed=2&movers=12\n";
 }
@@ -97,6 +99,8 @@ bool scn_load_builtin(const char* spec, scn_scene* out, char* err, size_t err_si
         scn_gen_city(&b, p.seed, (uint32_t)p.tris, (uint32_t)p.movers);
     } else if (name_len == 8 && strncmp(name, "interior", 8) == 0 && !p.has_tris) {
         scn_gen_interior(&b, p.seed, (uint32_t)p.movers);
+    } else if (name_len == 5 && strncmp(name, "house", 5) == 0 && !p.has_tris && !p.has_movers) {
+        scn_gen_house(&b, p.seed);
     } else if (name_len == 4 && strncmp(name, "unit", 4) == 0 && !p.has_tris && !p.has_seed && !p.has_movers) {
         scn_gen_unit(&b);
     } else {

@@ -31,6 +31,21 @@
  *   x = cx-3.2, z in [7, 10] (mirrored), y in [0, 2], and seeded furniture
  *   boxes in 1.0 <= |x - cx| <= 3.8.
  *
+ * builtin:house[?seed=S]  a detailed two-storey house (procgen_house*.c),
+ *   built as CAD/BIM exports are: every part a closed box, parts touching,
+ *   coplanar or interpenetrating. Outer walls x in [-6, 6], z in [-4.5, 4.5],
+ *   0.3 m thick; floors y = 0 and y = 3 (slab 2.75-3), roof slab 6-6.25; a
+ *   yard quad y = -0.15 over x in [-12, 12], z in [-10, 10]. Hall between
+ *   walls x = +-1.5 (0.12 m thick), stairs on its east side (x in [0.4, 1.44],
+ *   bottom at z = 2.2, up towards -z). Doors 1.0 x 2.1 m; the front door
+ *   x in [-1.35, -0.15] in the north wall. The bundled walk's lanes hold no
+ *   geometry within 0.3 m of the eye (1.7 m): x = -0.75 from the yard
+ *   (z = 8.5) to z = -2.25, z = -2.25 to x = -3.25, x = -3.25 to z = 2.25
+ *   (through the living-kitchen door), z = 2.25 back to x = -0.75,
+ *   x = -0.75 to z = -3.25 and z = -3.25 to x = 3.25 (the doors on it are
+ *   always open). Furniture
+ *   positions are fixed; the seed varies book rows and the other doors.
+ *
  * builtin:unit  four objects with analytic visibility (no seed):
  *   "ground": the quad y = 0, x in [-10, 10], z in [-15, 5], facing +y;
  *   "wall"  W: box x in [-2, 2],     y in [0, 3], z in [-5.1, -5];

@@ -62,6 +62,7 @@ void scn_gen_box(scn_builder* b, const float lo[3], const float hi[3], unsigned 
 void scn_gen_city(scn_builder* b, uint64_t seed, uint32_t tris, uint32_t movers);
 void scn_gen_interior(scn_builder* b, uint64_t seed, uint32_t movers);
 void scn_gen_unit(scn_builder* b);
+void scn_gen_house(scn_builder* b, uint64_t seed);
 
 /* `count` movers of the city (blocks per half-extent as generated) or the
  * interior, appended after the static scene (procgen_movers.c). */

@@ -10,6 +10,7 @@
 // device enables fragment but not vertex-stage stores.
 #ifndef PVS_RW
 #define PVS_RW
+#define TV_PVS_WRITES
 #endif
 
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs_view_buf {
@@ -19,6 +20,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
     float near_dist, delta, focal_px, max_width;
     uint width, height, k, triangle_count; // width, height: the whole image
     uint tile_x, tile_y, tile_w, tile_h;    // the tile being computed (pvs/tiles.h): per-pixel buffers index it
+    uint explain, pad0, pad1, pad2;         // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain)
 } view;
 
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ADJ) readonly buffer pvs_adj_buf { uint adjacency[]; };
@@ -48,5 +50,18 @@ layout(push_constant) uniform pvs_push_block {
     uint layer;
     uint kind;
 } pc;
+
+#ifdef TV_PVS_WRITES
+// Puts triangle `id` in the PVS. In explain mode (pvs_desc.explain) its flag
+// collects the TV_REASON_* bit of every rule that output it; otherwise a plain
+// store, so the normal path pays one uniform branch.
+void pvs_mark(uint id, uint reason)
+{
+    if (view.explain != 0u)
+        atomicOr(tri_flags[id], reason);
+    else
+        tri_flags[id] = 1u;
+}
+#endif
 
 #endif

@@ -92,14 +92,14 @@ void spill(uint p, float w, float slope)
         return;
     if ((pc.kind & TV_PVS_KIND_WIDE) == 0u) {
         if (pixstate[p].x == TV_STENCIL_OVERFLOW && lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_FRONT] != 0x7F800000u)
-            tri_flags[v_triangle] = 1u;
+            pvs_mark(v_triangle, TV_REASON_OVERFLOW);
         return;
     }
     if (!pvs_seethrough(v_triangle) && (v_s2.z == 0.0 || covers_centre()))
         return; // not a candidate: the exact spill draw's
     float depth = max(v_near, w - 0.5 * slope); // as P2 pushed it
     if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE])) // P3's bound
-        tri_flags[v_triangle] = 1u;
+        pvs_mark(v_triangle, TV_REASON_OVERFLOW);
 }
 
 void main()
@@ -155,7 +155,7 @@ void main()
             // faces): the depth test kept one, but an eye's raster may show
             // either (z-fighting), so both are visible from v*.
             if (w <= nearest + slope * TV_PVS_TIE_SLOPES)
-                tri_flags[v_triangle] = 1u;
+                pvs_mark(v_triangle, TV_REASON_TIE);
             return;
         }
         // Visible from v* through part of the pixel: in front of everything
@@ -165,7 +165,7 @@ void main()
         // surface just behind it: an eye's pixel centre may land on it).
         float inside = max(v_near, w - 0.5 * slope); // its nearest depth in the pixel
         if (v_far < nearest || inside <= nearest + slope * TV_PVS_TIE_SLOPES)
-            tri_flags[v_triangle] = 1u;
+            pvs_mark(v_triangle, TV_REASON_PARTIAL);
         if (kind == TV_PVS_KIND_BACK && !narrower_than_a_pixel())
             return; // a wider back covers pixel centres, where it is in the sequence
         // A candidate stands for the part of the triangle inside the pixel,
@@ -179,7 +179,7 @@ void main()
     }
     if (pvs_sealed(p)) { // a face of a later layer in front of the terminator (pvs_sealed_output)
         if (pvs_sealed_output(p, w))
-            tri_flags[v_triangle] = 1u;
+            pvs_mark(v_triangle, TV_REASON_SEALED);
     } else if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
         // overflow policy: left to the spill draws after P3
         atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);

@@ -27,10 +27,10 @@ void main()
     ivec2 image_xy = ivec2(xy + uvec2(view.tile_x, view.tile_y)); // the visibility buffers hold the whole image
     uint id = imageLoad(vis_ids, image_xy).x;
     if (id != TV_NO_TRIANGLE)
-        tri_flags[id] = 1u;
+        pvs_mark(id, TV_REASON_VIS);
     id = imageLoad(vis_wide, image_xy).x;
     if (id != TV_NO_TRIANGLE)
-        tri_flags[id] = 1u;
+        pvs_mark(id, TV_REASON_VIS_WIDE);
     uint p = xy.y * view.tile_w + xy.x;
     uvec4 st = pixstate[p];
     float hide_begin = uintBitsToFloat(st.z), hide_end = uintBitsToFloat(st.w);
@@ -40,7 +40,7 @@ void main()
         if (e.y != TV_ENTRY_FRONT || (hide_begin < hide_end && depth >= hide_begin && depth < hide_end))
             continue;
         if (e.z != TV_ID_PRIOR)
-            tri_flags[e.z & ~TV_ID_CANDIDATE] = 1u;
+            pvs_mark(e.z & ~TV_ID_CANDIDATE, TV_REASON_OPEN_RUN);
         if ((e.z & TV_ID_CANDIDATE) == 0u)
             break;
     }

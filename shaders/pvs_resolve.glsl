@@ -65,12 +65,31 @@ bool entry_less(seq_entry a, seq_entry b)
     return uint(a.interval) < uint(b.interval);
 }
 
+// The rule of the outputs that follow, for explain mode (pvs_desc.explain):
+// TV_REASON_FRONT, or TV_REASON_OVERFLOW once the overflow policy took over.
+uint out_reason;
+
 void output_id(uint id)
 {
     if (id == TV_ID_PRIOR || (id & TV_ID_CULLED) != 0u)
         return;
-    tri_flags[id & ~(TV_ID_CANDIDATE | TV_ID_STRADDLED)] = 1u;
+    uint reason = out_reason != TV_REASON_FRONT       ? out_reason
+                  : (id & TV_ID_CANDIDATE) != 0u      ? TV_REASON_CANDIDATE
+                  : (id & TV_ID_STRADDLED) != 0u      ? TV_REASON_STRADDLED
+                                                      : TV_REASON_FRONT;
+    pvs_mark(id & ~(TV_ID_CANDIDATE | TV_ID_STRADDLED), reason);
     n_out++;
+}
+
+// The back of an interval output with its first front (iv_show_back):
+// straddled, or else seen through a crack.
+void output_shown_back(uint id)
+{
+    uint rule = out_reason;
+    if (rule == TV_REASON_FRONT && (id & TV_ID_STRADDLED) == 0u)
+        out_reason = TV_REASON_CRACK;
+    output_id(id);
+    out_reason = rule;
 }
 
 // A candidate front, or a candidate back (pvs_face.frag: the back of a
@@ -99,6 +118,7 @@ float kdepth(uint bits) { return uintBitsToFloat(bits); }
 // pixel can no longer be sealed.
 void resolve_overflow()
 {
+    out_reason = TV_REASON_OVERFLOW;
     for (uint i = 0u; i < carry_count; i++)
         if (carry[i].kind == TV_ENTRY_FRONT)
             output_id(carry[i].id);
@@ -294,7 +314,7 @@ bool walk(uint m)
         if (e.delta > 0 && e.kind == TV_ENTRY_FRONT) {
             iv_hidden[e.interval] = prefix > 0;
             if (prefix == 0 && iv_show_back[e.interval])
-                output_id(ent[iv_back[e.interval]].id);
+                output_shown_back(ent[iv_back[e.interval]].id);
         }
         if (prefix == 0 && e.delta > 0)
             open = e.kind == TV_ENTRY_BEGIN ? e.depth : ent[iv_back[e.interval]].depth;
@@ -340,7 +360,7 @@ bool walk(uint m)
         if (e.kind == TV_ENTRY_FRONT || e.interval < 0)
             output_id(e.id);
         if (e.kind == TV_ENTRY_FRONT && e.interval >= 0 && iv_show_back[e.interval])
-            output_id(ent[iv_back[e.interval]].id);
+            output_shown_back(ent[iv_back[e.interval]].id);
         term_depth = e.depth;
         hide_begin = span_lo;
         hide_end = span_hi;
@@ -464,6 +484,7 @@ bool resolve_end(uint n, uint m)
     }
     carry_range(n);
     if (!carry_run(n)) {
+        out_reason = TV_REASON_OVERFLOW; // the carry is full
         for (uint i = uint(iv_run); i < n; i++)
             if (ent[i].kind == TV_ENTRY_FRONT)
                 output_id(ent[i].id);
@@ -508,6 +529,7 @@ void load_pixel(uint pixel)
         carry[c] = make_entry(uintBitsToFloat(e.x), e.y, e.z, 0);
     }
     n_out = 0u;
+    out_reason = TV_REASON_FRONT;
     term_depth = stencil == TV_STENCIL_SEALED ? uintBitsToFloat(st.y) : 0.0;
 }
 

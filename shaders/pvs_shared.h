@@ -125,6 +125,21 @@
  * TV_ID_CULLED. */
 #define TV_ID_STRADDLED 0x20000000u
 
+/* Explain mode (pvs_desc.explain): each triangle's flag holds the OR of the
+ * rules that output it (docs/evaluation.md, "Explaining false positives"). */
+#define TV_REASON_VIS 0x001u       /* P4: nearest face at a pixel centre (visibility buffer) */
+#define TV_REASON_VIS_WIDE 0x002u  /* P4: the dilated visibility buffer */
+#define TV_REASON_OPEN_RUN 0x004u  /* P4: a run still carried after the last layer */
+#define TV_REASON_TIE 0x008u       /* P2: depth tie with the nearest face at a centre */
+#define TV_REASON_PARTIAL 0x010u   /* P2: in front through part of a pixel (sub-pixel) */
+#define TV_REASON_SEALED 0x020u    /* P2: in front of a sealed pixel's terminator */
+#define TV_REASON_FRONT 0x040u     /* P3: a front of a validated interval, a terminator, a lone face */
+#define TV_REASON_CANDIDATE 0x080u /* P3: a candidate front or back (touches the pixel) */
+#define TV_REASON_STRADDLED 0x100u /* P3: a straddled back */
+#define TV_REASON_CRACK 0x200u     /* P3: the back of an interval seen through a crack */
+#define TV_REASON_OVERFLOW 0x400u  /* P3's overflow policy, a full carry, the spill draws */
+#define TV_REASON_COUNT 11
+
 /* The prior culled back (TV_ID_CULLED): it closes a prior front's interval
  * and is otherwise skipped like every culled back. */
 #define TV_ID_PRIOR_CULLED 0x7FFFFFFEu

@@ -187,6 +187,34 @@ static void test_two_storeys(void)
     scn_scene_free(&s);
 }
 
+/* builtin:house: the walkable rule finds both storeys inside the house and
+ * joins them over the stairs into the yard's region. */
+static void test_house_storeys(void)
+{
+    scn_scene s;
+    char err[512];
+    TV_CHECK(scn_load("builtin:house", &s, err, sizeof err));
+    tv_walkable* w = walkable(&s);
+    TV_CHECK(w != NULL);
+    if (!w)
+        return;
+    const float lo[3] = { -5.7f, 0, -4.2f }, hi[3] = { 5.7f, 0, 4.2f };
+    int ground = points_in(w, lo, hi, 1.5f, 1.7f), upper = points_in(w, lo, hi, 4.5f, 4.7f);
+    printf("     builtin:house: %u walkable points, %d on the ground floor, %d upstairs\n", tv_walkable_count(w),
+           ground, upper);
+    TV_CHECK(ground > 50 && upper > 50);
+    uint32_t largest = tv_walkable_largest_region(w), found = 0;
+    for (uint32_t i = 0; i < tv_walkable_count(w); i++) {
+        float e[3];
+        uint32_t r;
+        tv_walkable_point(w, i, e, &r);
+        found |= (r == largest) << (e[1] > 4.5f && e[1] < 4.7f);
+    }
+    TV_CHECK(found == 3); /* the largest region reaches upstairs */
+    tv_walkable_destroy(w);
+    scn_scene_free(&s);
+}
+
 int main(void)
 {
     TV_TEST_RUN(test_points_above_floor);
@@ -194,5 +222,6 @@ int main(void)
     TV_TEST_RUN(test_none_under_low_ceiling);
     TV_TEST_RUN(test_viewcells_spread_and_repeat);
     TV_TEST_RUN(test_two_storeys);
+    TV_TEST_RUN(test_house_storeys);
     return tv_test_finish();
 }

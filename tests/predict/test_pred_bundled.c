@@ -4,6 +4,7 @@
 #include "path_bundled.h"
 #include "test.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -29,6 +30,23 @@ static bool _in_interior_free_space(const double p[3])
     return false;
 }
 
+/* builtin:house: within 0.45 m of the walk's lanes (procedural.h; tested
+ * clear 0.3 m either side by test_procedural), which the 1 m corner fillets
+ * cut by at most 0.41 m, inside the rooms they turn in. */
+static bool _on_house_lanes(const double p[3])
+{
+    const double lanes[7][2] = {{-0.75, 8.5}, {-0.75, -2.25}, {-3.25, -2.25}, {-3.25, 2.25},
+                                {-0.75, 2.25}, {-0.75, -3.25}, {3.25, -3.25}};
+    for (int i = 0; i < 6; i++) {
+        double x0 = fmin(lanes[i][0], lanes[i + 1][0]), x1 = fmax(lanes[i][0], lanes[i + 1][0]);
+        double z0 = fmin(lanes[i][1], lanes[i + 1][1]), z1 = fmax(lanes[i][1], lanes[i + 1][1]);
+        double dx = fmax(0.0, fmax(x0 - p[0], p[0] - x1)), dz = fmax(0.0, fmax(z0 - p[2], p[2] - z1));
+        if (dx * dx + dz * dz <= 0.45 * 0.45)
+            return true;
+    }
+    return false;
+}
+
 /* Checked against the Sponza geometry (docs/paths.md): no triangle comes
  * within 0.48 m (horizontally) of this box between 0.05 and 2 m above the floor. */
 static bool _in_sponza_atrium(const double p[3])
@@ -38,7 +56,7 @@ static bool _in_sponza_atrium(const double p[3])
 
 static void test_bundled(void)
 {
-    TV_CHECK(pred_bundled_path_count() == 9);
+    TV_CHECK(pred_bundled_path_count() == 10);
     for (int i = 0; i < pred_bundled_path_count(); i++) {
         const pred_bundled_path* b = pred_bundled_path_get(i);
         char file[1024], err[512];
@@ -85,6 +103,8 @@ static void test_bundled(void)
                 outside += !_in_city_streets(p);
             else if (strcmp(on_disk.scene, "builtin:interior") == 0)
                 outside += !_in_interior_free_space(p);
+            else if (strcmp(on_disk.scene, "builtin:house") == 0)
+                outside += !_on_house_lanes(p);
             else
                 outside += !_in_sponza_atrium(p);
         }

@@ -16,7 +16,7 @@ void fixture_open(fixture* f, uint32_t k)
     f->apex_target = f->target ? rnd_target_create(g_rnd, PW, PH, err, sizeof err) : NULL;
     f->pvs = f->apex_target ? pvs_create(g_rnd, &f->scene, f->gpu, &(pvs_desc){.width = PW, .height = PH, .k = k, .octree_cap = f->octree_cap,
                                                               .max_layers = f->max_layers,
-                                                              .coop_sort_min = f->coop_sort_min},
+                                                              .coop_sort_min = f->coop_sort_min, .explain = f->explain},
                                          err, sizeof err)
                             : NULL;
     if (!f->pvs) {

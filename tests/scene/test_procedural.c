@@ -30,8 +30,9 @@ static bool same_scene(const scn_scene* a, const scn_scene* b)
 static void test_determinism(void)
 {
     const char* specs[][3] = { { "builtin:city?seed=3&tris=50000", "builtin:city?tris=50000&seed=3", "builtin:city?seed=4&tris=50000" },
-                               { "builtin:interior?seed=1", "builtin:interior", "builtin:interior?seed=2" } };
-    for (int k = 0; k < 2; k++) {
+                               { "builtin:interior?seed=1", "builtin:interior", "builtin:interior?seed=2" },
+                               { "builtin:house?seed=1", "builtin:house", "builtin:house?seed=3" } };
+    for (int k = 0; k < 3; k++) {
         scn_scene a, b, c;
         TV_CHECK(load(specs[k][0], &a) && load(specs[k][1], &b) && load(specs[k][2], &c));
         TV_CHECK(same_scene(&a, &b));
@@ -43,7 +44,7 @@ static void test_determinism(void)
 static void test_bad_specs(void)
 {
     const char* bad[] = { "builtin:town", "builtin:city?tris=5", "builtin:city?seed=-1", "builtin:city?seed",
-                          "builtin:city?color=3", "builtin:unit?seed=2", "builtin:interior?tris=100000",
+                          "builtin:city?color=3", "builtin:unit?seed=2", "builtin:interior?tris=100000", "builtin:house?tris=30000",
                           "builtin:city?seed=1&seed=2", "builtin:city?tris=20000&seed=1&tris=30000" };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         scn_scene s;
@@ -164,6 +165,53 @@ static void test_interior_contract(void)
     scn_scene_free(&s);
 }
 
+/* builtin:house: a few tens of thousands of triangles, none degenerate,
+ * the bundled walk's lanes clear at eye height (procedural.h) and blocked
+ * beside them, the two floors and the roof where the contract puts them. */
+static void test_house_contract(void)
+{
+    scn_scene s;
+    TV_CHECK(load("builtin:house?seed=7", &s));
+    printf("     builtin:house: %u triangles, %u materials\n", s.triangle_count, s.material_count);
+    TV_CHECK(s.triangle_count >= 20000 && s.triangle_count <= 60000);
+    uint32_t degenerate = 0;
+    for (uint32_t t = 0; t < s.triangle_count; t++) {
+        const float* p[3];
+        for (int c = 0; c < 3; c++)
+            p[c] = s.positions + 3 * (size_t)s.indices[3 * t + c];
+        float e1[3], e2[3];
+        for (int k = 0; k < 3; k++)
+            e1[k] = p[1][k] - p[0][k], e2[k] = p[2][k] - p[0][k];
+        float cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2], cz = e1[0] * e2[1] - e1[1] * e2[0];
+        degenerate += 0.5f * sqrtf(cx * cx + cy * cy + cz * cz) < 1e-6f;
+    }
+    TV_CHECK(degenerate == 0);
+    /* the walk's lanes, at knee, eye and head height (1.7 m eye, 0.3 m clearance) */
+    const float lanes[][4] = { { -0.75f, 8.5f, -0.75f, -2.25f }, { -0.75f, -2.25f, -3.25f, -2.25f },
+                               { -3.25f, -2.25f, -3.25f, 2.25f }, { -3.25f, 2.25f, -0.75f, 2.25f },
+                               { -0.75f, 2.25f, -0.75f, -3.25f }, { -0.75f, -3.25f, 3.25f, -3.25f } };
+    uint32_t blocked = 0;
+    for (int l = 0; l < 6; l++)
+        for (float y = 0.5f; y <= 2.0f; y += 0.75f)
+            for (float off = -0.3f; off <= 0.3f; off += 0.3f) {
+                bool along_z = lanes[l][0] == lanes[l][2];
+                float a[3] = { lanes[l][0] + (along_z ? off : 0), y, lanes[l][1] + (along_z ? 0 : off) };
+                float b[3] = { lanes[l][2] + (along_z ? off : 0), y, lanes[l][3] + (along_z ? 0 : off) };
+                blocked += hits(&s, a, b, NULL);
+            }
+    TV_CHECK(blocked == 0);
+    /* control: half a metre beside the lanes through doors, the walls block */
+    float beside_a[3] = { -0.75f, 1.7f, -2.9f }, beside_b[3] = { -3.25f, 1.7f, -2.9f };
+    TV_CHECK(hits(&s, beside_a, beside_b, NULL) > 0);
+    /* vertical line at the hall: ground slab, upper slab (two faces each) and roof */
+    float below[3] = { -0.6f, -1.0f, -3.1f }, above[3] = { -0.6f, 7.0f, -3.1f };
+    TV_CHECK(hits(&s, below, above, NULL) >= 6);
+    TV_CHECK_NEAR(s.bounds_min[0], -12.0, 1e-5);
+    TV_CHECK_NEAR(s.bounds_max[1], 6.25, 1e-5);
+    TV_CHECK_NEAR(s.bounds_min[1], -0.15, 1e-5);
+    scn_scene_free(&s);
+}
+
 static void test_unit_scene(void)
 {
     scn_scene s;
@@ -212,6 +260,7 @@ int main(void)
     TV_TEST_RUN(test_bad_specs);
     TV_TEST_RUN(test_city_size_and_streets);
     TV_TEST_RUN(test_interior_contract);
+    TV_TEST_RUN(test_house_contract);
     TV_TEST_RUN(test_unit_scene);
     return tv_test_finish();
 }
