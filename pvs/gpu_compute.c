@@ -158,6 +158,7 @@ static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
 {
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_PIXCOUNT].buffer, 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_LOST].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
+    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_SPILL].buffer, 0, sizeof(uint32_t), 0); /* the list's length */
     uint32_t c[TV_PVS_C_PER_LAYER] = {0};
     for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_UMBRA; d += 4)
         c[d + 1] = 1; /* instanceCount */
@@ -235,14 +236,14 @@ static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
  * accumulates over tiles (triangle flags, statistics). */
 static void reset_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, bool first)
 {
-    const uint32_t per_tile[] = {TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE, TV_PVS_BIND_ACTIVE};
+    /* the spill list's layer stamps too: each tile runs every layer again */
+    const uint32_t per_tile[] = {TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE, TV_PVS_BIND_ACTIVE, TV_PVS_BIND_SPILL};
     const uint32_t per_computation[] = {TV_PVS_BIND_COUNTERS, TV_PVS_BIND_TRI_FLAGS, TV_PVS_BIND_LAYER_STATS};
     barrier(cmd); /* the previous tile's P4 is done with everything rewritten here */
-    for (size_t i = 0; i < 3; i++) {
+    for (size_t i = 0; i < sizeof per_tile / sizeof per_tile[0]; i++)
         vkCmdFillBuffer(cmd, ctx->buffers[per_tile[i]].buffer, 0, VK_WHOLE_SIZE, 0);
-        if (first)
-            vkCmdFillBuffer(cmd, ctx->buffers[per_computation[i]].buffer, 0, VK_WHOLE_SIZE, 0);
-    }
+    for (size_t i = 0; first && i < sizeof per_computation / sizeof per_computation[0]; i++)
+        vkCmdFillBuffer(cmd, ctx->buffers[per_computation[i]].buffer, 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, TV_PVS_C_REGIONS * sizeof(uint32_t),
                     sizeof(uint32_t), 0);
     const uint32_t tile[4] = {t->x, t->y, t->width, t->height};

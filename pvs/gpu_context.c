@@ -133,6 +133,7 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_LOST, pixels * TV_PVS_LOST_STRIDE * 4},
         {TV_PVS_BIND_COOP_LIST, pixels * 4},
         {TV_PVS_BIND_PROXIES, (VkDeviceSize)ctx->max_proxies * PVS_PROXY_FLOATS * 4},
+        {TV_PVS_BIND_SPILL, (1 + 2 * drawn) * 4},
     };
     for (size_t i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
         if (!create_buffer(ctx, fixed[i].binding, fixed[i].size, err, err_size))

@@ -19,8 +19,9 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id)
     switch (kind) {
     case TV_ENTRY_FRONT:
         if (!claim(&kbuf->front_count, TV_K_FRONT, &s)) {
-            if ((id & TV_ID_CANDIDATE) == 0 && (kbuf->front_lost == 0.0f || depth < kbuf->front_lost))
-                kbuf->front_lost = depth;
+            float* lost = (id & TV_ID_CANDIDATE) ? &kbuf->candidate_lost : &kbuf->front_lost;
+            if (*lost == 0.0f || depth < *lost)
+                *lost = depth;
             return false;
         }
         kbuf->front_depth[s] = depth;

@@ -535,10 +535,8 @@ static uint32_t resolve_sealed(const pvs_pixel_state* s, const pvs_kbuf* kbuf, u
     return n_out;
 }
 
-uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out,
-                           bool* overflowed)
+static uint32_t resolve_layer(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out, bool* overflowed)
 {
-    assert(state && kbuf && out && overflowed);
     *overflowed = false;
     if (state->stencil == TV_STENCIL_SEALED)
         return resolve_sealed(state, kbuf, out);
@@ -583,4 +581,20 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
         state->hide_begin = state->hide_end = 0.0f;
     }
     return n_out;
+}
+
+/* The stored candidates: the GPU's request_spill (resolve.h says why). */
+uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out, bool* overflowed)
+{
+    assert(state && kbuf && out && overflowed);
+    uint32_t n = resolve_layer(state, kbuf, out, overflowed);
+    float bound = state->stencil == TV_STENCIL_SEALED ? state->term_depth : INFINITY;
+    if (kbuf->front_count <= TV_K_FRONT || state->stencil == TV_STENCIL_UNTRIMMED ||
+        !has_depth(kbuf->candidate_lost) || kbuf->candidate_lost >= bound)
+        return n;
+    for (uint32_t i = 0; i < TV_K_FRONT; i++) {
+        if ((kbuf->front_tri[i] & TV_ID_CANDIDATE) != 0 && kbuf->front_depth[i] < bound)
+            emit(out, &n, kbuf->front_tri[i]);
+    }
+    return n;
 }

@@ -30,8 +30,9 @@
 extern "C" {
 #endif
 
-/* Most triangle ids one pvs_resolve_pixel call can output. */
-#define PVS_RESOLVE_MAX_OUTPUT (TV_K_FRONT + TV_K_BACK + TV_K_CARRY)
+/* Most triangle ids one pvs_resolve_pixel call can output (its stored
+ * candidates may come twice: from the resolve and as spill output). */
+#define PVS_RESOLVE_MAX_OUTPUT (2 * TV_K_FRONT + TV_K_BACK + TV_K_CARRY)
 
 /* The four k-buffers of one pixel for the current layer. */
 typedef struct pvs_kbuf {
@@ -54,6 +55,9 @@ typedef struct pvs_kbuf {
     /* Nearest depth of a front (not a candidate) that found the front list
      * full (0: none); pvs_kbuf_push keeps it, as P2's atomicMin does. */
     float front_lost;
+    /* The same for a candidate front: pvs_resolve_pixel then outputs the
+     * stored candidates that pvs_spill_output would output if lost. */
+    float candidate_lost;
     /* Nearest depth of a trim that found the trim list full (0: none). */
     float trim_lost;
 } pvs_kbuf;
@@ -93,7 +97,13 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id);
  * nothing (its nearest front is the visibility
  * buffer's), otherwise the pixel becomes trimmed and is resolved. Sets
  * *overflowed when a list of the pixel overflowed, its carry did not fit or
- * it was already in overflow state (the statistics count these pixels). */
+ * it was already in overflow state (the statistics count these pixels).
+ * When its front list lost a candidate (kbuf->candidate_lost), it also
+ * outputs every stored candidate that pvs_spill_output would output were it
+ * lost: the GPU's spill draws draw only the fronts that lost a fragment, so
+ * a stored candidate of a triangle that lost nothing, which a draw of every
+ * front would output there too, is output by P3 (request_spill); the ids
+ * then do not depend on which triangles lost what, nor on the tiling. */
 uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out,
                            bool* overflowed);
 

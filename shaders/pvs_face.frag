@@ -82,8 +82,9 @@ bool touches_pixel()
 
 // The spill draws after P3 (exact and dilated; P3 requests them, see
 // request_spill) at pixels whose front list overflowed in this layer. They
-// cannot tell a lost fragment from a stored one, so they output what P3 may
-// not have: every front of an overflowed pixel that lost one, and the
+// draw only the triangles that lost a fragment somewhere in P2 (the spill
+// list) but cannot tell which of their fragments, so they output what P3 may
+// not have: each such front at an overflowed pixel that lost one, and the
 // candidates within P3's bound. An untrimmed pixel needs nothing (its
 // visibility buffer holds its nearest face; P3 ignores its fronts).
 void spill(uint p, float w, float slope)
@@ -181,8 +182,11 @@ void main()
         if (pvs_sealed_output(p, w))
             pvs_mark(v_triangle, TV_REASON_SEALED);
     } else if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
-        // overflow policy: left to the spill draws after P3
+        // overflow policy: left to the spill draws after P3, which draw
+        // only the triangles listed here (once per layer: the stamp)
         atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);
+        if (atomicExchange(spill_list[TV_PVS_SPILL_STAMP(v_triangle)], pc.layer + 1u) != pc.layer + 1u)
+            spill_list[TV_PVS_SPILL_ENTRY(atomicAdd(spill_list[0], 1u))] = id & ~TV_ID_CANDIDATE; // as FF lists it
     }
     if (see)
         discard; // no depth, no visibility-buffer id (the stores above stay)

@@ -96,7 +96,8 @@ void main()
 {
     uint slot = uint(gl_VertexIndex) / 3u;
     uint corner = uint(gl_VertexIndex) - slot * 3u;
-    uint listed = (pc.kind & ~(TV_PVS_KIND_WIDE | TV_PVS_KIND_SPILL)) == TV_PVS_KIND_FRONT ? ff_list[slot] : bf_list[slot];
+    uint listed = (pc.kind & TV_PVS_KIND_SPILL) != 0u ? spill_list[TV_PVS_SPILL_ENTRY(slot)]
+                  : (pc.kind & ~TV_PVS_KIND_WIDE) == TV_PVS_KIND_FRONT ? ff_list[slot] : bf_list[slot];
     uint tri = listed & ~(TV_ID_CULLED | TV_ID_STRADDLED);
     vec4 c[3];
     for (uint i = 0u; i < 3u; i++)

@@ -500,17 +500,28 @@ bool resolve_end(uint n, uint m)
 // spill draw outputs every front of an overflowed pixel that lost a front;
 // the dilated one the candidates nearer than the bound left in
 // lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE]: all of them at an overflowed or open pixel, those in
-// front of the terminator at a pixel sealed now, none otherwise.
+// front of the terminator at a pixel sealed now, none otherwise. Both draw
+// only the spill list (the fronts that lost a fragment somewhere in the
+// layer), so the stored candidates the dilated draw would also find here
+// (those of triangles that lost nothing) are output now: the ids are those
+// of a draw of every front, per pixel and so under any tiling. The stored
+// fronts of an overflowed pixel, resolve_overflow has output.
 void request_spill()
 {
     const float inf = uintBitsToFloat(0x7F800000u);
     if (stencil == TV_STENCIL_OVERFLOW && lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_FRONT] != 0x7F800000u)
-        counters[TV_PVS_C_DRAW_SPILL] = counters[TV_PVS_C_DRAW_FF];
+        counters[TV_PVS_C_DRAW_SPILL] = 3u * spill_list[0];
     float bound = stencil == TV_STENCIL_SEALED ? term_depth : inf;
-    bool candidates = kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE]) < bound;
+    bool candidates = stencil != TV_STENCIL_UNTRIMMED && kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE]) < bound;
     lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE] = candidates ? floatBitsToUint(bound) : 0u;
-    if (candidates)
-        counters[TV_PVS_C_DRAW_SPILL_WIDE] = counters[TV_PVS_C_DRAW_FF];
+    if (!candidates)
+        return;
+    counters[TV_PVS_C_DRAW_SPILL_WIDE] = 3u * spill_list[0];
+    for (uint i = 0u; i < view.k; i++) {
+        uvec2 e = kfront[KB + i];
+        if ((e.y & TV_ID_CANDIDATE) != 0u && kdepth(e.x) < bound)
+            output_id(e.y);
+    }
 }
 
 

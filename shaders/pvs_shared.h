@@ -203,7 +203,10 @@
 #define TV_PVS_LOST_STRIDE    3u
 #define TV_PVS_BIND_COOP_LIST  22 // P3: pixels whose sequence the cooperative pass sorts (pvs_resolve_group.comp)
 #define TV_PVS_BIND_PROXIES    23 // vec4 min, vec4 max per proxy of the request (pvs_compute_dynamic); P1, P2 pull their box faces
-#define TV_PVS_BINDINGS        24
+#define TV_PVS_BIND_SPILL      24 // uint: the spill list's length, then interleaved: its entries (the layer's fronts that lost a fragment in P2, drawn by the spill draws) and a layer stamp per drawn id
+#define TV_PVS_SPILL_ENTRY(i)  (1u + 2u * (i)) // slot of the list's entry i in TV_PVS_BIND_SPILL
+#define TV_PVS_SPILL_STAMP(t)  (2u + 2u * (t)) // slot of drawn id t's stamp: 1 + the last layer that listed it (0 after each tile's reset)
+#define TV_PVS_BINDINGS        25
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
 // behind e1, trim corner behind e0 (w: their nearer plane depths), umbra
@@ -214,8 +217,8 @@
 // Slots of the counters buffer (uints). Four VkDrawIndirectCommand (FF, BF,
 // trim, umbra; vertexCount is bumped by P1 per primitive), one
 // VkDispatchIndirectCommand for P3, the active count, the two spill draws
-// (the FF draw again after P3, exact and dilated; P3 copies FF's vertexCount
-// into them when a pixel needs them), the VkDispatchIndirectCommand of P3's
+// (after P3, exact and dilated, of the fronts in TV_PVS_BIND_SPILL; P3 sets
+// their vertexCount from its length when a pixel needs them), the VkDispatchIndirectCommand of P3's
 // cooperative pass (groups = min(deferred pixels, TV_PVS_MAX_COOP_GROUPS))
 // and the deferred pixel count, then counters that live for a whole
 // pvs_compute.

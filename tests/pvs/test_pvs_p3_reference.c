@@ -97,6 +97,7 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     kb->nearest_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->nearest_culled_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->front_lost = rnd_u(8) == 0 ? rnd_depth() : 0.0f;
+    kb->candidate_lost = rnd_u(3) == 0 ? rnd_depth() : 0.0f; /* P3 then outputs stored candidates */
     kb->trim_lost = rnd_u(2) ? rnd_depth() : 0.0f; /* read when the trim list overflowed */
     if (st->stencil == TV_STENCIL_SEALED) {
         /* P2 stores nothing at a sealed pixel (it outputs the faces
@@ -192,7 +193,7 @@ static void upload(pvs_context* ctx, const case_data* c)
         centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED] = fbits(kb->nearest_culled_back);
         uint32_t* l = lost + TV_PVS_LOST_STRIDE * p;
         l[TV_PVS_LOST_FRONT] = kb->front_lost > 0.0f ? fbits(kb->front_lost) : fbits(INFINITY);
-        l[TV_PVS_LOST_CANDIDATE] = fbits(INFINITY);
+        l[TV_PVS_LOST_CANDIDATE] = kb->candidate_lost > 0.0f ? fbits(kb->candidate_lost) : fbits(INFINITY);
         l[TV_PVS_LOST_TRIM] = fbits(kb->trim_lost);
     }
     memset(ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped, 0, ctx->buffers[TV_PVS_BIND_TRI_FLAGS].size);

@@ -68,7 +68,12 @@ static void test_overflow_behind_terminator(void)
     pvs_pixel_state t = {0};
     r = run_layer(&t, items, n);
     TV_CHECK(r.overflowed && r.spilled_count == 5 && r.spill_out == 5); /* the pixel stays open */
-    CHECK_OUT(r, 1); /* the stored candidates lie in the umbra */
+    /* The stored candidates lie in the umbra, but the list lost a candidate:
+     * they are output as the lost ones are (resolve.h, pvs_resolve_pixel). */
+    uint32_t want[TV_K_FRONT] = {1};
+    for (uint32_t i = 1; i < TV_K_FRONT; i++)
+        want[i] = 100 + i - 1;
+    TV_CHECK(same_set(&r, want, TV_K_FRONT));
     TV_CHECK(t.stencil == TV_STENCIL_TRIMMED);
 }
 
