@@ -517,11 +517,13 @@ void request_spill()
     if (!candidates)
         return;
     counters[TV_PVS_C_DRAW_SPILL_WIDE] = 3u * spill_list[0];
+    out_reason = TV_REASON_OVERFLOW; // what the dilated spill draw would have output
     for (uint i = 0u; i < view.k; i++) {
         uvec2 e = kfront[KB + i];
         if ((e.y & TV_ID_CANDIDATE) != 0u && kdepth(e.x) < bound)
             output_id(e.y);
     }
+    out_reason = TV_REASON_FRONT;
 }
 
 
