@@ -117,25 +117,19 @@ bool rnd_raster_pipeline_create(rnd_context* ctx, const rnd_raster_desc* desc, V
      * is an integer format that cannot blend. */
     const VkPipelineColorBlendAttachmentState write = {.colorWriteMask = desc->color_write};
     VkPipelineColorBlendAttachmentState blend[2] = {write, write};
-    if (desc->blend == RND_BLEND_ALPHA) {
-        /* colour: src over dst; alpha: coverage, the most opaque layer */
-        blend[0] = (VkPipelineColorBlendAttachmentState){.blendEnable = VK_TRUE,
-                                                         .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
-                                                         .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-                                                         .colorBlendOp = VK_BLEND_OP_ADD,
-                                                         .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
-                                                         .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
-                                                         .alphaBlendOp = VK_BLEND_OP_MAX,
-                                                         .colorWriteMask = desc->color_write};
-    } else if (desc->blend == RND_BLEND_KEEP) {
-        blend[0] = (VkPipelineColorBlendAttachmentState){.blendEnable = VK_TRUE,
-                                                         .srcColorBlendFactor = VK_BLEND_FACTOR_ZERO,
-                                                         .dstColorBlendFactor = VK_BLEND_FACTOR_ONE,
-                                                         .colorBlendOp = VK_BLEND_OP_ADD,
-                                                         .srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO,
-                                                         .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
-                                                         .alphaBlendOp = VK_BLEND_OP_ADD,
-                                                         .colorWriteMask = desc->color_write};
+    if (desc->blend != RND_BLEND_NONE) {
+        /* ALPHA: colour src over dst, alpha the most opaque layer (MAX
+         * ignores the factors); KEEP: dst unchanged */
+        const bool over = desc->blend == RND_BLEND_ALPHA;
+        blend[0] = (VkPipelineColorBlendAttachmentState){
+            .blendEnable = VK_TRUE,
+            .srcColorBlendFactor = over ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ZERO,
+            .dstColorBlendFactor = over ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE,
+            .colorBlendOp = VK_BLEND_OP_ADD,
+            .srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO,
+            .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
+            .alphaBlendOp = over ? VK_BLEND_OP_MAX : VK_BLEND_OP_ADD,
+            .colorWriteMask = desc->color_write};
     }
     VkPipelineColorBlendStateCreateInfo blending = {.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
                                                     .attachmentCount = desc->color_count,
