@@ -1,6 +1,7 @@
-/* gt_seethrough.h - the ground truth's see-through pass. The renderer draws
- * SCN_ALPHA_BLEND triangles opaque, but they hide nothing (scene.h), so a
- * sample view's id render would miss what lies behind a window. For scenes
+/* gt_seethrough.h - the ground truth's see-through pass. The renderer's ids
+ * and depth name the nearest surface, SCN_ALPHA_BLEND triangles included,
+ * but those hide nothing (scene.h), so a sample view's id render would miss
+ * what lies behind a window. For scenes
  * with such triangles, each sample view also renders the opaque triangles
  * alone (the ids the metrics use) and then peels the see-through ones: it
  * renders those left, takes every one nearer than the opaque depth at some

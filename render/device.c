@@ -185,6 +185,7 @@ static bool check_features(rnd_context* ctx, char* err, size_t err_size)
     const char* missing = !f13.dynamicRendering ? "dynamicRendering"
                           : !f13.synchronization2 ? "synchronization2"
                           : !f.features.fragmentStoresAndAtomics ? "fragmentStoresAndAtomics"
+                          : !f.features.independentBlend         ? "independentBlend"
                                                                  : NULL;
     if (missing) {
         snprintf(err, err_size, "%s lacks the Vulkan feature %s", ctx->props.deviceName, missing);
@@ -220,7 +221,8 @@ static bool create_device(rnd_context* ctx, bool swapchain, char* err, size_t er
                                             .synchronization2 = VK_TRUE};
     VkPhysicalDeviceFeatures2 features = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
                                           .pNext = &f13,
-                                          .features = {.fragmentStoresAndAtomics = VK_TRUE}};
+                                          .features = {.fragmentStoresAndAtomics = VK_TRUE,
+                                                       .independentBlend = VK_TRUE}};
     float priority = 1.0f;
     VkDeviceCreateInfo info = {
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,

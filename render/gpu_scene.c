@@ -68,6 +68,38 @@ static material_gpu* convert_materials(const scn_scene* s)
     return out;
 }
 
+static void blend_centroids(const scn_scene* s, rnd_gpu_scene* g)
+{
+    for (uint32_t i = 0; i < g->blend_count; i++) {
+        const uint32_t* tri = s->indices + 3 * (size_t)g->blend_ids[i];
+        for (int axis = 0; axis < 3; axis++) {
+            float sum = 0.0f;
+            for (int c = 0; c < 3; c++)
+                sum += s->positions[3 * (size_t)tri[c] + axis];
+            g->blend_centroids[3 * i + axis] = sum / 3.0f;
+        }
+    }
+}
+
+/* Lists the BLEND triangles (draw.c sorts them back to front per draw). */
+static bool find_blend(const scn_scene* s, rnd_gpu_scene* g)
+{
+    for (uint32_t t = 0; t < s->triangle_count; t++)
+        g->blend_count += s->materials[s->tri_material[t]].alpha_mode == SCN_ALPHA_BLEND;
+    if (g->blend_count == 0)
+        return true;
+    g->blend_ids = malloc(sizeof(uint32_t) * g->blend_count);
+    g->blend_centroids = malloc(sizeof(float) * 3 * g->blend_count);
+    if (!g->blend_ids || !g->blend_centroids)
+        return false;
+    uint32_t n = 0;
+    for (uint32_t t = 0; t < s->triangle_count; t++)
+        if (s->materials[s->tri_material[t]].alpha_mode == SCN_ALPHA_BLEND)
+            g->blend_ids[n++] = t;
+    blend_centroids(s, g);
+    return true;
+}
+
 /* Rejects scenes the renderer cannot bind, before anything is allocated. */
 static bool check_scene(rnd_context* ctx, const scn_scene* s, char* err, size_t err_size)
 {
@@ -165,7 +197,7 @@ rnd_gpu_scene* rnd_scene_create(rnd_context* ctx, const scn_scene* s, char* err,
     rnd_gpu_scene* g = calloc(1, sizeof *g);
     float* attribs = interleave_attribs(s, 0, s->vertex_count);
     material_gpu* materials = convert_materials(s);
-    if (!g || !attribs || !materials) {
+    if (!g || !attribs || !materials || !find_blend(s, g)) {
         snprintf(err, err_size, "scene %s: out of memory preparing the upload", s->name);
         free(attribs);
         free(materials);
@@ -243,6 +275,7 @@ bool rnd_scene_update_vertices(rnd_context* ctx, rnd_gpu_scene* g, const scn_sce
     rnd_staging_release(ctx, &staging);
     rnd_stream_destroy(ctx, &stream);
     free(attribs);
+    blend_centroids(s, g);
     return ok;
 }
 
@@ -258,5 +291,7 @@ void rnd_scene_destroy(rnd_context* ctx, rnd_gpu_scene* g)
     for (uint32_t i = 0; i < 5; i++)
         rnd_buffer_destroy(ctx, buffers[i]);
     rnd_image_destroy(ctx, &g->textures);
+    free(g->blend_ids);
+    free(g->blend_centroids);
     free(g);
 }

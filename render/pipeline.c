@@ -110,11 +110,27 @@ bool rnd_raster_pipeline_create(rnd_context* ctx, const rnd_raster_desc* desc, V
                                                         .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
     VkPipelineDepthStencilStateCreateInfo depth = {.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
                                                    .depthTestEnable = desc->depth_test,
-                                                   .depthWriteEnable = desc->depth_test,
+                                                   .depthWriteEnable = desc->depth_test && !desc->depth_read_only,
                                                    .depthCompareOp = VK_COMPARE_OP_LESS};
-    /* identical states (independentBlend is optional) */
+    /* Without blending the states are identical (no independentBlend
+     * needed); a blend applies to attachment 0 only, as the id attachment
+     * is an integer format that cannot blend. */
     const VkPipelineColorBlendAttachmentState write = {.colorWriteMask = desc->color_write};
     VkPipelineColorBlendAttachmentState blend[2] = {write, write};
+    if (desc->blend != RND_BLEND_NONE) {
+        /* ALPHA: colour src over dst, alpha the most opaque layer (MAX
+         * ignores the factors); KEEP: dst unchanged */
+        const bool over = desc->blend == RND_BLEND_ALPHA;
+        blend[0] = (VkPipelineColorBlendAttachmentState){
+            .blendEnable = VK_TRUE,
+            .srcColorBlendFactor = over ? VK_BLEND_FACTOR_SRC_ALPHA : VK_BLEND_FACTOR_ZERO,
+            .dstColorBlendFactor = over ? VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA : VK_BLEND_FACTOR_ONE,
+            .colorBlendOp = VK_BLEND_OP_ADD,
+            .srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO,
+            .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
+            .alphaBlendOp = over ? VK_BLEND_OP_MAX : VK_BLEND_OP_ADD,
+            .colorWriteMask = desc->color_write};
+    }
     VkPipelineColorBlendStateCreateInfo blending = {.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
                                                     .attachmentCount = desc->color_count,
                                                     .pAttachments = blend};
@@ -171,7 +187,14 @@ bool rnd_mesh_pipeline_create(rnd_context* ctx, char* err, size_t err_size)
                                            VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT,
                             .depth_format = RND_DEPTH_FORMAT,
                             .depth_test = true};
-    bool ok = vert && frag && rnd_raster_pipeline_create(ctx, &mesh, &ctx->mesh_pipeline, err, err_size);
+    /* the three passes of draw.c: opaque, BLEND colour, BLEND depth and ids */
+    rnd_raster_desc blend = mesh, blend_depth = mesh;
+    blend.blend = RND_BLEND_ALPHA;
+    blend.depth_read_only = true;
+    blend_depth.blend = RND_BLEND_KEEP;
+    bool ok = vert && frag && rnd_raster_pipeline_create(ctx, &mesh, &ctx->mesh_pipeline, err, err_size) &&
+              rnd_raster_pipeline_create(ctx, &blend, &ctx->blend_pipeline, err, err_size) &&
+              rnd_raster_pipeline_create(ctx, &blend_depth, &ctx->blend_depth_pipeline, err, err_size);
     if (vert)
         vkDestroyShaderModule(ctx->device, vert, NULL);
     if (frag)
@@ -181,8 +204,10 @@ bool rnd_mesh_pipeline_create(rnd_context* ctx, char* err, size_t err_size)
 
 void rnd_mesh_pipeline_destroy(rnd_context* ctx)
 {
-    if (ctx->mesh_pipeline)
-        vkDestroyPipeline(ctx->device, ctx->mesh_pipeline, NULL);
+    VkPipeline pipelines[3] = {ctx->mesh_pipeline, ctx->blend_pipeline, ctx->blend_depth_pipeline};
+    for (uint32_t i = 0; i < 3; i++)
+        if (pipelines[i])
+            vkDestroyPipeline(ctx->device, pipelines[i], NULL);
     if (ctx->mesh_layout)
         vkDestroyPipelineLayout(ctx->device, ctx->mesh_layout, NULL);
     if (ctx->sampler)

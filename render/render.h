@@ -15,6 +15,9 @@
  * ascending id order through the same shaders as a full draw, so every pixel
  * whose front-most full-render triangle is in the list gets bit-identical
  * colour, depth and id (equal-depth ties resolve to the lower id in both).
+ * SCN_ALPHA_BLEND triangles are blended after all others, back to front by
+ * centroid; depth and ids still name the nearest surface, BLEND included,
+ * and the colour invariant holds where that surface is not BLEND.
  *
  * Threading: rnd_create/rnd_destroy and the create/destroy functions of
  * scenes and targets must not race with other calls on the same object.
@@ -105,7 +108,8 @@ uint32_t rnd_target_height(const rnd_target* target);
 
 /* Read-backs of the last rnd_draw into caller-owned arrays of width*height
  * elements, rows top to bottom. Colour: 4 bytes per pixel, sRGB-encoded RGB
- * and alpha 255 where a triangle was drawn (the clear colour elsewhere).
+ * and alpha 255 where an opaque triangle was drawn (the clear colour
+ * elsewhere, with the largest alpha of the BLEND triangles over it).
  * Return false (logged) when the target holds no successful draw or on a
  * Vulkan failure. */
 bool rnd_target_read_color(rnd_context* ctx, rnd_target* target, uint8_t* rgba);

@@ -37,7 +37,9 @@ struct rnd_context {
     VkDescriptorSetLayout scene_set_layout; /* set TV_SET_SCENE */
     VkDescriptorSetLayout draw_set_layout;  /* set TV_SET_DRAW */
     VkPipelineLayout mesh_layout;
-    VkPipeline mesh_pipeline;
+    VkPipeline mesh_pipeline;        /* opaque and MASK triangles */
+    VkPipeline blend_pipeline;       /* BLEND colour, back to front, no depth writes */
+    VkPipeline blend_depth_pipeline; /* BLEND depth and ids, colour kept */
     VkSampler sampler;
 };
 
@@ -144,6 +146,11 @@ VkShaderModule rnd_shader_module(rnd_context* ctx, const uint32_t* code, size_t 
 /* A triangle-list pipeline for dynamic rendering, shared by the mesh pass and
  * the PVS passes: no vertex input (vertex pulling), no culling, one sample,
  * dynamic viewport and scissor. */
+typedef enum rnd_blend {
+    RND_BLEND_NONE = 0, /* fragments replace */
+    RND_BLEND_ALPHA,    /* src-alpha over dst; alpha = max(src, dst) */
+    RND_BLEND_KEEP,     /* dst kept: a pass that writes only the other attachments and depth */
+} rnd_blend;
 typedef struct rnd_raster_desc {
     VkShaderModule vert, frag;
     VkPipelineLayout layout;
@@ -152,6 +159,8 @@ typedef struct rnd_raster_desc {
     VkColorComponentFlags color_write; /* the same write mask for each of them */
     VkFormat depth_format;
     bool depth_test;                   /* LESS test with depth writes; off: neither */
+    bool depth_read_only;              /* with depth_test: no depth writes */
+    rnd_blend blend;                   /* of colour attachment 0; needs independentBlend */
 } rnd_raster_desc;
 bool rnd_raster_pipeline_create(rnd_context* ctx, const rnd_raster_desc* desc, VkPipeline* out, char* err,
                                 size_t err_size);
@@ -169,8 +178,10 @@ void rnd_mesh_pipeline_destroy(rnd_context* ctx);
 typedef struct rnd_mesh_push {
     float view_proj[16];
     uint32_t use_draw_ids; /* 0: triangle = draw slot, 1: triangle = draw_ids[slot] */
+    uint32_t skip_blend;   /* 1: BLEND triangles are clipped away (the opaque pass) */
 } rnd_mesh_push;
-_Static_assert(offsetof(rnd_mesh_push, use_draw_ids) == 64 && sizeof(rnd_mesh_push) == 68,
+_Static_assert(offsetof(rnd_mesh_push, use_draw_ids) == 64 && offsetof(rnd_mesh_push, skip_blend) == 68 &&
+                   sizeof(rnd_mesh_push) == 72,
                "rnd_mesh_push must match tv_mesh_push in mesh_push.glsl");
 
 /* Records the upload of every scene texture as one layer of a 2D array
@@ -182,6 +193,11 @@ bool rnd_texture_array_create(rnd_context* ctx, VkCommandBuffer cmd, rnd_staging
 
 struct rnd_gpu_scene {
     uint32_t triangle_count;
+    /* BLEND triangles, ascending, and their world centroids for the
+     * back-to-front sort (kept posed by rnd_scene_update_vertices) */
+    uint32_t blend_count;
+    uint32_t* blend_ids;
+    float* blend_centroids;
     rnd_buffer positions, attribs, indices, tri_material, materials;
     rnd_image textures; /* one layer per scene texture (textures.c) */
     VkDescriptorPool pool;
@@ -196,6 +212,8 @@ struct rnd_target {
     rnd_buffer draw_ids;  /* grow-only subset id list, host-visible */
     uint32_t* sort_scratch; /* grow-only copy for unsorted id lists */
     uint32_t sort_capacity;
+    struct rnd_blend_key* blend_keys; /* grow-only back-to-front sort scratch */
+    uint32_t blend_key_capacity;
     VkDescriptorPool pool;
     VkDescriptorSet draw_set; /* binds draw_ids; rewritten when it grows */
     bool drawn;             /* images hold a finished draw in TRANSFER_SRC layout */

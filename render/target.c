@@ -100,6 +100,7 @@ void rnd_target_destroy(rnd_context* ctx, rnd_target* t)
     rnd_image_destroy(ctx, &t->ids);
     rnd_image_destroy(ctx, &t->color);
     free(t->sort_scratch);
+    free(t->blend_keys);
     free(t);
 }
 

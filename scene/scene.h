@@ -26,7 +26,8 @@ typedef enum scn_alpha_mode {
     SCN_ALPHA_OPAQUE = 0,
     SCN_ALPHA_MASK = 1, /* fragments with alpha < alpha_cutoff are discarded in every pass */
     SCN_ALPHA_BLEND = 2 /* see-through: never an occluder in the PVS (docs/trim-regions.md, "See-through
-                           triangles") nor in the ground truth; drawn opaque by the renderer */
+                           triangles") nor in the ground truth; the renderer blends it
+                           over the rest, sorted back to front (docs/rendering.md) */
 } scn_alpha_mode;
 
 typedef struct scn_material {

@@ -1,7 +1,7 @@
 #version 460
 // Mesh pass, fragment stage: glTF back-face culling, base colour x texture,
 // alpha mask, one directional light plus hemispheric ambient, triangle id
-// output.
+// output. BLEND materials output their alpha for the blend pipeline.
 #extension GL_GOOGLE_include_directive : require
 #include "mesh_common.glsl"
 
@@ -28,6 +28,7 @@ void main()
         n = -n; // a double-sided back is lit as a front
     vec3 ambient = mix(vec3(TV_GROUND_COLOR), vec3(TV_SKY_COLOR), n.y * 0.5 + 0.5);
     vec3 sun = vec3(TV_SUN_COLOR) * max(dot(n, vec3(TV_SUN_DIR)), 0.0);
-    o_color = vec4(base.rgb * (ambient + sun), 1.0);
+    bool blend = (tv_materials[v_material].flags & TV_MAT_ALPHA_BLEND) != 0u;
+    o_color = vec4(base.rgb * (ambient + sun), blend ? base.a : 1.0);
     o_triangle = v_triangle;
 }

@@ -21,6 +21,11 @@ void main()
     uint tri = pc.use_draw_ids != 0u ? draw_ids[slot] : slot;
     uint v = tv_vertex_index(tri, corner);
     gl_Position = pc.view_proj * vec4(tv_vertex_position(v), 1.0);
+    // The opaque pass of a draw that blends: all three corners behind the
+    // near plane clip the whole triangle, so full and subset draws keep one
+    // vertex-pulling slot per triangle.
+    if (pc.skip_blend != 0u && (tv_materials[tv_tri_material[tri]].flags & TV_MAT_ALPHA_BLEND) != 0u)
+        gl_Position = vec4(0.0, 0.0, -1.0, 1.0);
     v_normal = tv_vertex_normal(v);
     v_uv = tv_vertex_uv(v);
     v_triangle = tri;

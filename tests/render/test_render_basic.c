@@ -23,7 +23,8 @@ typedef struct frame {
     float depth[W * H];
 } frame;
 
-static frame* render(const scn_scene* s, const rnd_camera* cam)
+/* Draws tri_ids[0..count) (every triangle when NULL) and reads it all back. */
+static frame* render_subset(const scn_scene* s, const rnd_camera* cam, const uint32_t* tri_ids, uint32_t count)
 {
     char err[256];
     frame* f = calloc(1, sizeof *f);
@@ -31,14 +32,16 @@ static frame* render(const scn_scene* s, const rnd_camera* cam)
     rnd_target* t = rnd_target_create(ctx, W, H, err, sizeof err);
     TV_CHECK(g && t);
     rnd_draw_stats stats;
-    TV_CHECK(rnd_draw(ctx, t, g, cam, NULL, 0, &stats));
-    TV_CHECK(stats.triangles == s->triangle_count && stats.cpu_ms > 0);
+    TV_CHECK(rnd_draw(ctx, t, g, cam, tri_ids, count, &stats));
+    TV_CHECK(stats.triangles == (tri_ids ? count : s->triangle_count) && stats.cpu_ms > 0);
     TV_CHECK(rnd_target_read_color(ctx, t, f->rgba) && rnd_target_read_ids(ctx, t, f->ids) &&
              rnd_target_read_depth(ctx, t, f->depth));
     rnd_target_destroy(ctx, t);
     rnd_scene_destroy(ctx, g);
     return f;
 }
+
+static frame* render(const scn_scene* s, const rnd_camera* cam) { return render_subset(s, cam, NULL, 0); }
 
 static const uint8_t* px(const frame* f, int x, int y) { return f->rgba + 4 * (y * W + x); }
 
@@ -184,6 +187,71 @@ static void double_sided_back_faces(void)
     scn_scene_free(&s);
 }
 
+static bool near8(const uint8_t* c, const float linear[3], int tolerance)
+{
+    for (int i = 0; i < 3; i++)
+        if (abs(c[i] - fx_srgb8(linear[i])) > tolerance)
+            return false;
+    return true;
+}
+
+/* A red opaque quad (a box's front face) at z -6, a 50 % green BLEND pane at
+ * -5 and a 50 % blue one at -4, the near pane added first so that id order
+ * is not back-to-front order. Blending is linear (sRGB attachment); stored
+ * 8-bit sRGB between layers costs a code or two. */
+static void blend_panes_over_box(void)
+{
+    scn_scene s;
+    fx_scene_init(&s, 3, 3);
+    uint32_t red = fx_material(&s, 1, 0, 0, SCN_ALPHA_OPAQUE, false, -1);
+    uint32_t blue = fx_material(&s, 0, 0, 1, SCN_ALPHA_BLEND, false, -1);
+    uint32_t green = fx_material(&s, 0, 1, 0, SCN_ALPHA_BLEND, false, -1);
+    s.materials[blue].base_color[3] = s.materials[green].base_color[3] = 0.5f;
+    uint32_t box = fx_quad_z(&s, -3, -3, 3, 3, -6, red);
+    uint32_t near_pane = fx_quad_z(&s, -0.8f, -0.8f, 0.8f, 0.8f, -4, blue);
+    uint32_t far_pane = fx_quad_z(&s, -1.6f, -1.6f, 1.6f, 1.6f, -5, green);
+    rnd_camera cam = fx_camera();
+    const float n[3] = {0, 0, 1};
+    const float r = shade(1, n, 0), g = shade(1, n, 1), b = shade(1, n, 2);
+    const int centre = (H / 2) * W + W / 2, green_only = (H / 2) * W + W / 2 + 14, box_only = (H / 2) * W + W / 2 + 22;
+
+    frame* f = render(&s, &cam);
+    /* back to front: blue over (green over red); front to back would give green over (blue over red) */
+    const float mix3[3] = {0.25f * r, 0.25f * g, 0.5f * b}, mix2[3] = {0.5f * r, 0.5f * g, 0};
+    TV_CHECK(near8(px(f, W / 2, H / 2), mix3, 3) && px(f, W / 2, H / 2)[3] == 255);
+    TV_CHECK(near8(px(f, W / 2 + 14, H / 2), mix2, 3));
+    TV_CHECK(near8(px(f, W / 2 + 22, H / 2), (const float[3]){r, 0, 0}, 1));
+    /* ids and depth: the nearest surface, BLEND included (the FN metric's choice) */
+    TV_CHECK(f->ids[centre] == near_pane || f->ids[centre] == near_pane + 1);
+    TV_CHECK(f->ids[green_only] == far_pane || f->ids[green_only] == far_pane + 1);
+    TV_CHECK(f->ids[box_only] == box || f->ids[box_only] == box + 1);
+    TV_CHECK_NEAR(f->depth[centre], 100.0 * 3.9 / (99.9 * 4.0), 1e-6);
+    free(f);
+
+    /* a subset, unsorted: the box behind the near pane is still blended in */
+    const uint32_t pane_and_box[4] = {near_pane + 1, box, near_pane, box + 1};
+    f = render_subset(&s, &cam, pane_and_box, 4);
+    TV_CHECK(near8(px(f, W / 2, H / 2), (const float[3]){0.5f * r, 0, 0.5f * b}, 3));
+    TV_CHECK(f->ids[centre] == near_pane || f->ids[centre] == near_pane + 1);
+    free(f);
+    /* only the panes (the ground truth's see-through peel): ids and depth of the nearest one */
+    const uint32_t panes[4] = {far_pane, far_pane + 1, near_pane, near_pane + 1};
+    f = render_subset(&s, &cam, panes, 4);
+    TV_CHECK(f->ids[centre] == near_pane || f->ids[centre] == near_pane + 1);
+    TV_CHECK(f->ids[green_only] == far_pane || f->ids[green_only] == far_pane + 1);
+    TV_CHECK(f->ids[box_only] == TV_NO_TRIANGLE && f->depth[box_only] == 1.0f);
+    TV_CHECK_NEAR(f->depth[green_only], 100.0 * 4.9 / (99.9 * 5.0), 1e-6);
+    free(f);
+
+    /* the near pane opaque: pure blue, the box hidden */
+    s.materials[blue].alpha_mode = SCN_ALPHA_OPAQUE;
+    f = render(&s, &cam);
+    TV_CHECK(near8(px(f, W / 2, H / 2), (const float[3]){0, 0, b}, 1));
+    TV_CHECK(f->ids[centre] == near_pane || f->ids[centre] == near_pane + 1);
+    free(f);
+    scn_scene_free(&s);
+}
+
 int main(void)
 {
     ctx = fx_context();
@@ -193,6 +261,7 @@ int main(void)
     TV_TEST_RUN(red_quad_colour_id_depth);
     TV_TEST_RUN(alpha_mask_discards);
     TV_TEST_RUN(double_sided_back_faces);
+    TV_TEST_RUN(blend_panes_over_box);
     TV_CHECK(rnd_validation_message_count(ctx) == 0);
     rnd_destroy(ctx);
     return tv_test_finish();
