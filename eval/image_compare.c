@@ -44,6 +44,8 @@ size_t rnd_count_fn_pixels_from(const uint32_t* full_ids, size_t pixel_count, co
 {
     assert(full_ids && tri_in_set);
     size_t count = 0;
+    if (first_id >= triangle_count) /* no triangle from first_id on (a scene without movers): skip the image */
+        return 0;
     for (size_t p = 0; p < pixel_count; p++) {
         uint32_t id = full_ids[p];
         if (id == TV_NO_TRIANGLE || id < first_id)
