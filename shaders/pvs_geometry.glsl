@@ -14,17 +14,24 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_PROXIES) readonly buffer 
 
 bool pvs_is_proxy(uint tri) { return tri >= view.triangle_count; }
 
-// Box corners as bits (1: +x, 2: +y, 4: +z), three per face triangle; the
-// winding does not matter, a see-through face has no back.
-const uint pvs_box_corners[36] = uint[36](0u, 4u, 6u, 0u, 6u, 2u, 1u, 3u, 7u, 1u, 7u, 5u, 0u, 1u, 5u, 0u, 5u, 4u,
-                                          2u, 6u, 7u, 2u, 7u, 3u, 0u, 2u, 3u, 0u, 3u, 1u, 4u, 5u, 7u, 4u, 7u, 6u);
+// Box corners as bits (1: +x, 2: +y, 4: +z), three per face triangle, 3 bits
+// per corner, 9 corners per word: the table (0 4 6, 0 6 2, 1 3 7, 1 7 5,
+// 0 1 5, 0 5 4, 2 6 7, 2 7 3, 0 2 3, 0 3 1, 4 5 7, 4 7 6) packed into
+// constants, because a constant array indexed at run time costs every
+// invocation of P1 and P2 an array copy on llvmpipe, proxy or not. The
+// winding does not matter: a see-through face has no back.
+uint pvs_box_corner_bits(uint k)
+{
+    uint word = k < 9u ? 0x76561a0u : k < 18u ? 0x4a29179u : k < 27u ? 0x341f5f2u : 0x6f3d858u;
+    return (word >> (3u * (k % 9u))) & 7u;
+}
 
 vec3 pvs_corner(uint tri, uint c)
 {
     if (!pvs_is_proxy(tri))
         return tv_vertex_position(tv_vertex_index(tri, c));
     uint v = tri - view.triangle_count, p = v / 12u;
-    uint bits = pvs_box_corners[3u * (v - 12u * p) + c];
+    uint bits = pvs_box_corner_bits(3u * (v - 12u * p) + c);
     return mix(proxy_box[2u * p].xyz, proxy_box[2u * p + 1u].xyz,
                vec3(float(bits & 1u), float((bits >> 1u) & 1u), float((bits >> 2u) & 1u)));
 }
