@@ -36,6 +36,7 @@ layout(location = 4) flat in vec3 v_s2;
 layout(location = 5) flat in float v_far;
 layout(location = 6) flat in float v_near;
 layout(location = 7) flat in uint v_id_flags;
+layout(location = 8) flat in uint v_see;
 
 layout(location = 0) out uint o_triangle;
 
@@ -96,7 +97,7 @@ void spill(uint p, float w, float slope)
             pvs_mark(v_triangle, TV_REASON_OVERFLOW);
         return;
     }
-    if (!pvs_seethrough(v_triangle) && (v_s2.z == 0.0 || covers_centre()))
+    if (v_see == 0u && (v_s2.z == 0.0 || covers_centre()))
         return; // not a candidate: the exact spill draw's
     float depth = max(v_near, w - 0.5 * slope); // as P2 pushed it
     if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE])) // P3's bound
@@ -113,7 +114,7 @@ void main()
         slope = abs(dFdx(w)) + abs(dFdy(w));
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && v_s2.z != 0.0 && !touches_pixel())
         discard;
-    bool see = pvs_seethrough(v_triangle);
+    bool see = v_see != 0u;
     if (see && (pc.kind & TV_PVS_KIND_WIDE) == 0u)
         discard;
     if (!see && tv_alpha_masked(v_material, tv_material_color(v_material, v_uv).a))

@@ -21,6 +21,7 @@ layout(location = 4) flat out vec3 v_s2;  // corner 2, orientation (0: not dilat
 layout(location = 5) flat out float v_far; // farthest corner's depth (clip w)
 layout(location = 6) flat out float v_near; // nearest corner's depth (clip w)
 layout(location = 7) flat out uint v_id_flags; // TV_ID_CULLED / TV_ID_STRADDLED from P1's list
+layout(location = 8) flat out uint v_see;      // 1: see-through (pvs_seethrough), looked up once per triangle, not per fragment
 
 // Two enlargements, each containing every pixel the triangle touches (its
 // Minkowski sum with the pixel square); the first is drawn unless the
@@ -143,5 +144,6 @@ void main()
     gl_Position = pos;
     v_triangle = tri;
     v_id_flags = listed & ~tri;
+    v_see = pvs_seethrough(tri) ? 1u : 0u;
     v_material = pvs_material(tri);
 }
