@@ -308,6 +308,7 @@ int tv_replay_run(const tv_replay_desc* d)
             .height = d->height,
             .eye_fov_deg = d->viewcell.display_fov_h_deg,
             .display_frames = frames,
+            .probe_requests = st.pipe.probes,
             .wall_s = (tv_now_ms() - wall0) * 1e-3,
             .interrupted = sig != 0,
         };

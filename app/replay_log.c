@@ -203,6 +203,7 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(f, "  \"clamped_pvs_count\": %llu,\n", (unsigned long long)log->clamped_pvs);
         fprintf(f, "  \"whole_scene_pvs_count\": %llu,\n", (unsigned long long)log->whole_scene_pvs);
         fprintf(f, "  \"whole_scene_frames\": %llu,\n", (unsigned long long)log->whole_scene_frames);
+        fprintf(f, "  \"probe_pvs_count\": %u,\n", m->probe_requests);
         const struct {
             const char* key;
             double v;
@@ -243,8 +244,9 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(table, " FN pixels mean / max  %8.2f / %.0f\n", sm.fn_mean, sm.fn_max);
         fprintf(table, " viewcell misses       %8llu of %llu display frames (every frame checked)\n",
                 (unsigned long long)log->misses, (unsigned long long)log->coverage_frames);
-        fprintf(table, " whole scene drawn     %8llu display frames (%llu whole-scene PVSs)\n",
-                (unsigned long long)log->whole_scene_frames, (unsigned long long)log->whole_scene_pvs);
+        fprintf(table, " whole scene drawn     %8llu display frames (%llu whole-scene PVSs, %u probes)\n",
+                (unsigned long long)log->whole_scene_frames, (unsigned long long)log->whole_scene_pvs,
+                m->probe_requests);
         fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);
         if (m->dynamic_tris)
             fprintf(table, " movers: PVS / FN px   %8.2f %% of %u moving triangles (static %.2f %%) / %.2f mean\n",

@@ -78,6 +78,7 @@ typedef struct tv_replay_meta {
     unsigned width, height;
     double eye_fov_deg;
     uint64_t display_frames;
+    uint32_t probe_requests; /* measured latency: PVSs requested as probes (pvs_pipeline.h) */
     double wall_s;
     bool interrupted; /* stopped by a signal: frames < the frames asked for */
 } tv_replay_meta;
