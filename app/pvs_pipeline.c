@@ -114,51 +114,41 @@ static double latency_for(const tv_pvs_pipeline* p, int frusta)
     return ms * 1e-3 * frusta * p->desc.latency_factor;
 }
 
-/* Sizes the viewcell of a request whose latency is `scale` x the model's.
- * Requests go out back to back: this PVS is in use from its arrival until
- * the next one arrives one latency later, plus a frame of slack. A PVS over
- * all directions takes one compute per frustum: sized again for that
- * latency (the longer horizon keeps it all-directions). `first`: the
- * start-up PVS is used from the first frame on, so its window starts at the
- * request instead of one latency later. */
-static bool size_request(tv_pvs_pipeline* p, double t, double frame_s, bool first, double scale,
-                         pred_viewcell_desc* vd, pvs_request* req)
-{
-    for (int frusta = 1;; frusta = req->vc.frusta) {
-        double latency = scale * latency_for(p, frusta);
-        vd->latency_s = first ? k_now_s : latency;
-        vd->window_s = (first ? 2.0 : 1.0) * latency + frame_s;
-        if (!pred_viewcell_size(vd, &p->predictor, &p->tracker, t, &req->vc))
-            return false;
-        if (req->vc.frusta == frusta || scale * latency_for(p, req->vc.frusta) == latency)
-            return true;
-    }
-}
-
 static bool request(tv_pvs_pipeline* p, double t, double frame_s, bool first, char* err, size_t err_size)
 {
     pred_viewcell_desc vd = p->desc.viewcell;
     pvs_request req;
     memset(&req, 0, sizeof req);
-    /* A whole-scene answer takes no compute and so adds no timing: under the
-     * measured model the estimate that caused it would never fall again, and
-     * the loop would stay on the whole scene after a load spike has passed.
-     * Instead the cell of a shorter latency (halved until a PVS resolves it)
-     * is computed as a probe: its window has mostly passed when it arrives,
-     * so it is drawn only inside what is left of it (whole scene after), but
-     * its time re-measures the device. */
-    bool probe_allowed = !first && p->desc.latency_model == TV_LATENCY_MEASURED && p->timed;
-    double scale = 1.0;
-    for (int halvings = 0;; halvings++, scale *= 0.5) {
-        if (!size_request(p, t, frame_s, first, scale, &vd, &req)) {
+    /* requests go out back to back: this PVS is in use from its arrival until
+     * the next one arrives one latency later, plus a frame of slack. A PVS over
+     * all directions takes one compute per frustum: sized again for that
+     * latency (the longer horizon keeps it all-directions) */
+    for (int frusta = 1;; frusta = req.vc.frusta) {
+        double latency = latency_for(p, frusta);
+        vd.latency_s = first ? k_now_s : latency;
+        vd.window_s = (first ? 2.0 : 1.0) * latency + frame_s;
+        if (!pred_viewcell_size(&vd, &p->predictor, &p->tracker, t, &req.vc)) {
             snprintf(err, err_size, "no head sample before t = %.3f s", t);
             return false;
         }
-        if (!req.vc.whole_scene || !probe_allowed || halvings == TV_PVS_PROBE_HALVINGS)
+        if (req.vc.frusta == frusta || latency_for(p, req.vc.frusta) == latency)
             break;
     }
-    if (scale < 1.0 && !req.vc.whole_scene)
-        p->probes++;
+    /* A whole-scene answer takes no compute and so adds no timing: under the
+     * measured model the estimate that chose it would never fall again, and
+     * the loop would stay on the whole scene after a load spike has passed.
+     * Instead the smallest cell, sized for no latency and one frame, is
+     * computed as a probe: cheap, drawn only inside its (past) window, but
+     * timed, so the estimate follows the device again. */
+    if (req.vc.whole_scene && !first && p->desc.latency_model == TV_LATENCY_MEASURED && p->timed) {
+        pvs_request probe = req;
+        vd.latency_s = k_now_s;
+        vd.window_s = frame_s;
+        if (pred_viewcell_size(&vd, &p->predictor, &p->tracker, t, &probe.vc) && !probe.vc.whole_scene) {
+            req = probe;
+            p->probes++;
+        }
+    }
     /* the whole scene needs no compute: in use from its arrival on */
     if (req.vc.whole_scene)
         req.vc.t_begin = t;

@@ -33,11 +33,6 @@
  * whose slowest sizes the next request. */
 #define TV_PVS_TIMED 8
 
-/* Measured latency model: how often a request whose cell only the whole
- * scene covers halves its latency in search of a probe cell (2^-30: a cell
- * sized for no latency at all, so only the head's own uncertainty is left). */
-#define TV_PVS_PROBE_HALVINGS 30
-
 typedef struct tv_pvs_slot {
     tv_pvs_result r;
     uint8_t* mask; /* r.ids as a triangle_count byte mask */
@@ -76,7 +71,7 @@ typedef struct tv_pvs_pipeline {
     double frustum_ms[TV_PVS_TIMED]; /* measured model: the last PVSs' compute times per frustum */
     uint32_t timed;       /* PVSs timed into frustum_ms so far */
     uint32_t adopted;     /* PVSs taken into use so far */
-    uint32_t probes;      /* requests sized for a shortened latency to re-time the device (request) */
+    uint32_t probes;      /* measured model: smallest cells computed instead of a whole-scene one (request) */
     char latency_name[64]; /* "fixed 50.0 ms" / "measured x1.00" */
 } tv_pvs_pipeline;
 
