@@ -92,8 +92,10 @@ bool pvs_gt_record_add_view(pvs_gt_record* r, const uint32_t* ids, const uint32_
         return false;
     r->view_first = first;
     first[r->views] = r->entry_count;
-    memcpy(r->ids + r->entry_count, ids, count * sizeof *ids);
-    memcpy(r->pixels + r->entry_count, pixels, count * sizeof *pixels);
+    if (count) { /* an empty view may pass NULL */
+        memcpy(r->ids + r->entry_count, ids, count * sizeof *ids);
+        memcpy(r->pixels + r->entry_count, pixels, count * sizeof *pixels);
+    }
     r->entry_count += count;
     first[++r->views] = r->entry_count;
     return true;
