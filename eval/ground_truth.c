@@ -340,7 +340,10 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
                  vc->delta, vc->fov_pvs_deg);
         goto done;
     }
-    bool caching = d.gt_cache_dir && d.gt_cache_scene && !see.blend_count && !(d.pose && scene->mover_count);
+    assert(!d.gt_cache_dir || d.gt_cache_scene);
+    bool caching = d.gt_cache_dir && !see.blend_count && !(d.pose && scene->mover_count);
+    if (d.gt_cache_dir && !caching)
+        tv_log(TV_LOG_INFO, "gt cache: not used: the scene has %s", see.blend_count ? "see-through triangles" : "movers");
     bool cached = caching && cache_open(&d, scene, vc, n, file, sizeof file, key, sizeof key, &rec);
     double sum_sq = 0.0, fn_sum = 0.0, fn_rel_sum = 0.0, fn_dyn_sum = 0.0, gt_sum_ms = 0.0, ssim_sum = 0.0;
     uint32_t first_dynamic = scene->triangle_count - scene->dynamic_triangle_count, pvs_drawn = 0;
