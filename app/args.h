@@ -59,6 +59,10 @@ static inline uint32_t tv_arg_max_layers(int n)
  * (for example "--frames -3: must be >= 0"). Returns ok. */
 bool tv_arg_require(const char* name, double value, bool ok, const char* requirement);
 
+/* --gt-cache DIR: creates the folder (NULL: no cache, true). When it cannot,
+ * prints "--gt-cache DIR: cannot create the folder" and returns false. */
+bool tv_arg_gt_cache(const char* dir);
+
 /* Parses argv[0..argc) (argv[0] is the first option, not the command name).
  * Prints usage for --help/-h. `summary` is the one-paragraph description. */
 tv_args_result tv_args_parse(const char* command, const char* summary, const tv_arg* args,

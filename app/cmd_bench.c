@@ -425,7 +425,7 @@ int tv_cmd_bench(int argc, char** argv)
         o.pvs_res[0] = o.pvs_res[1] = 512;
     bench_run b = {.o = &o, .t0 = tv_now_ms()};
     if (!parse_lists(&o, &b) || !tv_arg_require("k", o.k, o.k >= 1, ">= 1") ||
-        !tv_arg_require("max-layers", o.max_layers, o.max_layers >= -1, ">= -1"))
+        !tv_arg_require("max-layers", o.max_layers, o.max_layers >= -1, ">= -1") || !tv_arg_gt_cache(o.gt_cache))
         return 2;
     float dir_len = sqrtf(o.dir[0] * o.dir[0] + o.dir[1] * o.dir[1] + o.dir[2] * o.dir[2]);
     if (o.every < 0 || o.samples < 1 || o.max_cells < 1 || o.cells_per_job < 0 || !(o.fov > 0.0f && o.fov <= o.fov_pvs) ||

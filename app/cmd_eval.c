@@ -125,7 +125,8 @@ static bool validate(const eval_opts* o, pvs_method_desc* md)
                                    .explain = o->explain},
                             .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples};
     if (!tv_arg_require("k", o->k, o->k >= 1, ">= 1") ||
-        !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1"))
+        !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1") ||
+        !tv_arg_gt_cache(o->gt_cache))
         return false;
     if ((!o->path && isnan(o->pos[0])) || o->every < 1 || o->samples < 1 || !(o->delta >= 0.0f) ||
         !pvs_method_from_name(o->method, &md->kind)) {
