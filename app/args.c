@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "args.h"
+#include "fs.h"
 #include "log.h"
 
 #include <errno.h>
@@ -142,4 +143,13 @@ bool tv_arg_require(const char* name, double value, bool ok, const char* require
     if (!ok)
         tv_log(TV_LOG_ERROR, "--%s %g: must be %s", name, value, requirement);
     return ok;
+}
+
+bool tv_arg_gt_cache(const char* dir)
+{
+    if (dir && !tv_mkdirs(dir)) {
+        tv_log(TV_LOG_ERROR, "--gt-cache %s: cannot create the folder", dir);
+        return false;
+    }
+    return true;
 }

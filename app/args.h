@@ -40,6 +40,8 @@ typedef enum tv_args_result {
 #define TV_ARG_PVS_RES(name, out) {(name), TV_ARG_RES, (out), "WxH", "tr: PVS resolution (default 512x512)"}
 #define TV_ARG_FOV_PVS(out) {"fov-pvs", TV_ARG_FLOAT, (out), "DEG", "PVS FOV, square frustum (default 90)"}
 #define TV_ARG_MAX_LAYERS(out) {"max-layers", TV_ARG_INT, (out), "N", "tr: merge octree layers into at most N (default -1: 14 on a GPU, never on a CPU device; 0: never)"}
+#define TV_ARG_GT_CACHE(out) {"gt-cache", TV_ARG_STRING, (out), "DIR", \
+    "keep each viewcell's ground truth in DIR and reuse it when scene and settings match (docs/bench.md)"}
 #define TV_ARG_SAMPLES(out) {"samples", TV_ARG_INT, (out), "N", "views per viewcell of the sampled ground truth (default 200)"}
 
 /* The defaults those rows state. */
@@ -56,6 +58,10 @@ static inline uint32_t tv_arg_max_layers(int n)
 /* When !ok, prints the one-line error "--NAME VALUE: must be REQUIREMENT"
  * (for example "--frames -3: must be >= 0"). Returns ok. */
 bool tv_arg_require(const char* name, double value, bool ok, const char* requirement);
+
+/* --gt-cache DIR: creates the folder (NULL: no cache, true). When it cannot,
+ * prints "--gt-cache DIR: cannot create the folder" and returns false. */
+bool tv_arg_gt_cache(const char* dir);
 
 /* Parses argv[0..argc) (argv[0] is the first option, not the command name).
  * Prints usage for --help/-h. `summary` is the one-paragraph description. */

@@ -12,6 +12,7 @@
 #include "clock.h"
 #include "commands.h"
 #include "fs.h"
+#include "gt_cache.h"
 #include "stats.h"
 #include "log.h"
 #include "version.h"
@@ -29,7 +30,7 @@
 #define DEFAULT_SCENES "builtin:city,builtin:house,sponza,oa:oasago2,oa:oa_dm5,oa:czest2ctf,oa:ctf_inyard,oa:oacmpdm9,oa:pul1ctf"
 
 typedef struct bench_opts {
-    const char *scenes, *deltas, *methods, *pos, *out, *shard;
+    const char *scenes, *deltas, *methods, *pos, *out, *shard, *gt_cache;
     float dir[3], fov, fov_pvs;
     int every, max_cells, cells_per_job, samples, k, max_layers;
     unsigned res[2], pvs_res[2];
@@ -63,6 +64,7 @@ typedef struct bench_run {
     int ncells, cap;
     double t0;
     char device[256];
+    char scene_id[1024]; /* the current scene's identity in the GT cache */
     bool cells_printed; /* this scene's viewcells were listed */
     char placed_spec[256]; /* the scene whose viewcells were placed automatically */
     float placed_pos[3 * MAX_LIST], placed_dir[3 * MAX_LIST];
@@ -202,7 +204,8 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
         return false;
     }
     rnd_target* target = rnd_target_create(s->ctx, o->pvs_res[0], o->pvs_res[1], err, sizeof err);
-    pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1]};
+    pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1],
+                        .gt_cache_dir = o->gt_cache, .gt_cache_scene = b->scene_id};
     bool ok = true, warm = false;
     for (int d = 0; d < b->ndelta && ok; d++) {
         int lo = 0, hi = 0, row = row_in_slice(b, scene, method, d, &lo, &hi), done = 0;
@@ -270,6 +273,8 @@ static bool bench_scene(bench_run* b, int scene)
     if (!tv_app_scene_open(spec, &s))
         return false;
     snprintf(b->device, sizeof b->device, "%s", rnd_device_name(s.ctx));
+    if (b->o->gt_cache)
+        pvs_gt_scene_id(&s.scene, spec, b->device, b->scene_id, sizeof b->scene_id);
     uint32_t tris = s.scene.triangle_count;
     uint8_t* mask = calloc(tris + 1, 1);
     uint8_t* gt = calloc(tris + 1, 1);
@@ -394,6 +399,7 @@ int tv_cmd_bench(int argc, char** argv)
         {"dir", TV_ARG_VEC3, o.dir, "X,Y,Z", "with --pos: view direction (default 0,0,-1)"},
         {"samples", TV_ARG_INT, &o.samples, "N", "ground-truth views per viewcell, also gt's (default 50)"},
         {"res", TV_ARG_RES, o.res, "WxH", "ground-truth and id-buffer resolution (default 320x180)"},
+        TV_ARG_GT_CACHE(&o.gt_cache),
         {"pvs-res", TV_ARG_RES, o.pvs_res, "WxH", "tr resolution and full-render timing (default 512x512)"},
         TV_ARG_K(&o.k),
         TV_ARG_MAX_LAYERS(&o.max_layers),
@@ -419,7 +425,7 @@ int tv_cmd_bench(int argc, char** argv)
         o.pvs_res[0] = o.pvs_res[1] = 512;
     bench_run b = {.o = &o, .t0 = tv_now_ms()};
     if (!parse_lists(&o, &b) || !tv_arg_require("k", o.k, o.k >= 1, ">= 1") ||
-        !tv_arg_require("max-layers", o.max_layers, o.max_layers >= -1, ">= -1"))
+        !tv_arg_require("max-layers", o.max_layers, o.max_layers >= -1, ">= -1") || !tv_arg_gt_cache(o.gt_cache))
         return 2;
     float dir_len = sqrtf(o.dir[0] * o.dir[0] + o.dir[1] * o.dir[1] + o.dir[2] * o.dir[2]);
     if (o.every < 0 || o.samples < 1 || o.max_cells < 1 || o.cells_per_job < 0 || !(o.fov > 0.0f && o.fov <= o.fov_pvs) ||

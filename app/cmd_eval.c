@@ -10,6 +10,7 @@
 #include "eval_common.h"
 #include "eval_images.h"
 #include "explain.h"
+#include "gt_cache.h"
 #include "log.h"
 
 #include <math.h>
@@ -18,7 +19,7 @@
 #include <string.h>
 
 typedef struct eval_opts {
-    const char *scene, *path, *out, *method;
+    const char *scene, *path, *out, *method, *gt_cache;
     float pos[3], dir[3];
     float delta, fov, fov_pvs;
     int every, samples, k, max_cells, max_layers;
@@ -97,6 +98,7 @@ static tv_args_result parse(eval_opts* o, int argc, char** argv)
         {"fov", TV_ARG_FLOAT, &o->fov, "DEG", "display FOV, horizontal (default 60)"},
         TV_ARG_FOV_PVS(&o->fov_pvs),
         TV_ARG_SAMPLES(&o->samples),
+        TV_ARG_GT_CACHE(&o->gt_cache),
         {"res", TV_ARG_RES, o->res, "WxH", "sample-view resolution (default 640x360)"},
         TV_ARG_PVS_RES("pvs-res", o->pvs_res),
         TV_ARG_K(&o->k),
@@ -123,7 +125,8 @@ static bool validate(const eval_opts* o, pvs_method_desc* md)
                                    .explain = o->explain},
                             .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples};
     if (!tv_arg_require("k", o->k, o->k >= 1, ">= 1") ||
-        !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1"))
+        !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1") ||
+        !tv_arg_gt_cache(o->gt_cache))
         return false;
     if ((!o->path && isnan(o->pos[0])) || o->every < 1 || o->samples < 1 || !(o->delta >= 0.0f) ||
         !pvs_method_from_name(o->method, &md->kind)) {
@@ -160,8 +163,12 @@ static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, c
     uint8_t* gt = calloc(tris ? tris : 1, 1);
     tv_eval_images worst = {0};
     tv_explain ex = {0};
+    char scene_id[1024] = "";
+    if (o->gt_cache)
+        pvs_gt_scene_id(&s->scene, spec, rnd_device_name(s->ctx), scene_id, sizeof scene_id);
     pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1],
-                        .pose = tv_app_scene_pose, .pose_user = s};
+                        .pose = tv_app_scene_pose, .pose_user = s, .gt_cache_dir = o->gt_cache,
+                        .gt_cache_scene = scene_id};
     if (!m || !mask || !gt) {
         tv_log(TV_LOG_ERROR, "%s", m ? "out of memory" : err);
         status = 1;

@@ -1,6 +1,8 @@
 #include "ground_truth.h"
 
 #include "clock.h"
+#include "gt_cache.h"
+#include "log.h"
 #include "gt_seethrough.h"
 #include "image_compare.h"
 #include "ssim.h"
@@ -176,7 +178,9 @@ double pvs_gt_richness_estimate(uint32_t observed, uint32_t once, uint32_t twice
 
 typedef struct eval_buffers {
     uint32_t* ids;
-    uint32_t* last_view; /* per triangle: 1 + the last sample view that saw it, 0 = none */
+    uint32_t* count;     /* per triangle: pixels of the current view, 0 between views */
+    uint32_t* seen;      /* the current view's triangles, then ascending */
+    uint32_t* seen_px;   /* ... and their pixels */
     uint8_t* views;      /* per triangle: sample views that saw it, saturating */
     uint8_t* full_rgba;
     uint8_t* pvs_rgba;
@@ -190,7 +194,9 @@ typedef struct eval_buffers {
 static void free_buffers(eval_buffers* b)
 {
     free(b->ids);
-    free(b->last_view);
+    free(b->count);
+    free(b->seen);
+    free(b->seen_px);
     free(b->views);
     free(b->full_rgba);
     free(b->pvs_rgba);
@@ -199,6 +205,53 @@ static void free_buffers(eval_buffers* b)
     free(b->full_ms);
     free(b->pvs_ms);
     free(b->ssim_scratch);
+}
+
+static int cmp_u32(const void* a, const void* b)
+{
+    uint32_t x = *(const uint32_t*)a, y = *(const uint32_t*)b;
+    return (x > y) - (x < y);
+}
+
+/* The triangles of one id buffer, ascending, with their pixels, into
+ * b->seen / b->seen_px; returns how many. */
+static uint32_t view_histogram(eval_buffers* b, size_t pixels, uint32_t triangle_count)
+{
+    uint32_t n = 0;
+    for (size_t px = 0; px < pixels; px++) {
+        uint32_t id = b->ids[px];
+        if (id >= triangle_count)
+            continue;
+        if (b->count[id]++ == 0)
+            b->seen[n++] = id;
+    }
+    qsort(b->seen, n, sizeof *b->seen, cmp_u32);
+    for (uint32_t e = 0; e < n; e++) {
+        b->seen_px[e] = b->count[b->seen[e]];
+        b->count[b->seen[e]] = 0;
+    }
+    return n;
+}
+
+/* Opens the viewcell's cache entry: true when `rec` now holds its GT.
+ * Otherwise rec is empty and, where the file was unusable, a warning says so. */
+static bool cache_open(const pvs_eval_desc* d, const scn_scene* scene, const pred_viewcell* vc, uint32_t views,
+                       char* file, size_t file_size, char* key, size_t key_size, pvs_gt_record* rec)
+{
+    char why[256];
+    pvs_gt_cache_key(d->gt_cache_scene, vc, d, key, key_size);
+    pvs_gt_cache_file(d->gt_cache_dir, key, file, file_size);
+    if (pvs_gt_cache_load(file, key, scene->triangle_count, rec, why, sizeof why)) {
+        if (rec->views == views) {
+            tv_log(TV_LOG_INFO, "gt cache: read %s", file);
+            return true;
+        }
+        snprintf(why, sizeof why, "%u views, %u expected", rec->views, views);
+        pvs_gt_record_free(rec);
+    }
+    if (why[0])
+        tv_log(TV_LOG_WARN, "gt cache: %s rejected (%s); recomputing", file, why);
+    return false;
 }
 
 static void set_metrics(const scn_scene* scene, const uint8_t* pvs_mask, const uint8_t* gt,
@@ -249,25 +302,30 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
     pvs_eval_desc d;
     resolve_desc(in_desc, vc, &d);
     memset(out, 0, sizeof *out);
-    size_t pixels = (size_t)d.width * d.height;
+    size_t pixels = (size_t)d.width * d.height, tris = scene->triangle_count ? scene->triangle_count : 1;
+    size_t seen_max = pixels < tris ? pixels : tris;
     eval_buffers b = {
         .ids = malloc(pixels * sizeof(uint32_t)),
-        .last_view = calloc(scene->triangle_count ? scene->triangle_count : 1, sizeof(uint32_t)),
-        .views = calloc(scene->triangle_count ? scene->triangle_count : 1, 1),
+        .count = calloc(tris, sizeof(uint32_t)),
+        .seen = malloc(seen_max * sizeof(uint32_t)),
+        .seen_px = malloc(seen_max * sizeof(uint32_t)),
+        .views = calloc(tris, 1),
         .full_rgba = malloc(pixels * 4),
         .pvs_rgba = malloc(pixels * 4),
-        .unreliable = malloc(scene->triangle_count ? scene->triangle_count : 1),
+        .unreliable = malloc(tris),
         .cams = malloc(d.samples * sizeof(rnd_camera)),
         .full_ms = malloc(d.samples * sizeof(double)),
         .pvs_ms = malloc(d.samples * sizeof(double)),
         .ssim_scratch = malloc(rnd_ssim_scratch_count(d.width, d.height) * sizeof(double)),
     };
-    uint8_t* gt = gt_mask ? gt_mask : calloc(scene->triangle_count ? scene->triangle_count : 1, 1);
+    uint8_t* gt = gt_mask ? gt_mask : calloc(tris, 1);
     rnd_target* target = NULL;
     gt_seethrough see = {0};
+    pvs_gt_record rec = {0};
+    char key[2048], file[4400];
     bool ok = false;
-    if (!b.ids || !b.last_view || !b.views || !b.full_rgba || !b.pvs_rgba || !b.unreliable || !b.cams ||
-        !b.full_ms || !b.pvs_ms || !b.ssim_scratch || !gt || !gt_seethrough_init(&see, scene, pixels)) {
+    if (!b.ids || !b.count || !b.seen || !b.seen_px || !b.views || !b.full_rgba || !b.pvs_rgba || !b.unreliable ||
+        !b.cams || !b.full_ms || !b.pvs_ms || !b.ssim_scratch || !gt || !gt_seethrough_init(&see, scene, pixels)) {
         snprintf(err, err_size, "ground truth: out of memory");
         goto done;
     }
@@ -282,62 +340,88 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
                  vc->delta, vc->fov_pvs_deg);
         goto done;
     }
+    assert(!d.gt_cache_dir || d.gt_cache_scene);
+    bool caching = d.gt_cache_dir && !see.blend_count && !(d.pose && scene->mover_count);
+    if (d.gt_cache_dir && !caching)
+        tv_log(TV_LOG_INFO, "gt cache: not used: the scene has %s", see.blend_count ? "see-through triangles" : "movers");
+    bool cached = caching && cache_open(&d, scene, vc, n, file, sizeof file, key, sizeof key, &rec);
     double sum_sq = 0.0, fn_sum = 0.0, fn_rel_sum = 0.0, fn_dyn_sum = 0.0, gt_sum_ms = 0.0, ssim_sum = 0.0;
-    uint32_t first_dynamic = scene->triangle_count - scene->dynamic_triangle_count;
+    uint32_t first_dynamic = scene->triangle_count - scene->dynamic_triangle_count, pvs_drawn = 0;
     out->psnr_min_db = INFINITY;
     for (uint32_t s = 0; s < n; s++) {
         rnd_draw_stats full_st, pvs_st;
-        if (d.pose && scene->mover_count) { /* golden-ratio times: every prefix spreads over the window */
-            double u = fmod((s + 0.5) * 0.6180339887498949, 1.0);
-            if (!(gpu = d.pose(d.pose_user, vc->t_begin + u * (vc->t_end - vc->t_begin), err, err_size)))
-                goto done;
-        }
-        double ts = tv_now_ms();
-        bool drawn = rnd_draw(ctx, target, gpu, &b.cams[s], NULL, 0, &full_st) &&
-                     rnd_target_read_ids(ctx, target, b.ids);
-        gt_sum_ms += tv_now_ms() - ts; /* the ground truth's own cost: one id render per sample */
-        if (!drawn || !rnd_target_read_color(ctx, target, b.full_rgba) ||
-            !rnd_draw(ctx, target, gpu, &b.cams[s], pvs_ids, pvs_count, &pvs_st) ||
-            !rnd_target_read_color(ctx, target, b.pvs_rgba)) {
-            snprintf(err, err_size, "ground truth: drawing sample view %u failed (Vulkan error logged)", s);
-            goto done;
-        }
-        b.full_ms[s] = full_st.cpu_ms;
-        b.pvs_ms[s] = pvs_st.cpu_ms;
         size_t fn = 0, fn_rel = 0;
-        if (see.blend_count &&
-            !gt_seethrough_sample(&see, ctx, target, gpu, &b.cams[s], pixels, pvs_mask, b.unreliable,
-                                  scene->triangle_count, b.ids, gt, &fn, &fn_rel)) {
-            snprintf(err, err_size, "ground truth: the see-through pass of sample view %u failed (Vulkan error logged)", s);
-            goto done;
-        }
-        for (size_t px = 0; px < pixels; px++) {
-            uint32_t id = b.ids[px];
-            if (id >= scene->triangle_count)
-                continue;
-            gt[id] = 1;
-            if (b.last_view[id] != s + 1) {
-                b.last_view[id] = s + 1;
-                b.views[id] += b.views[id] < UINT8_MAX;
+        const uint32_t *seen = b.seen, *seen_px = b.seen_px;
+        uint32_t seen_count;
+        if (cached) {
+            seen = rec.ids + rec.view_first[s];
+            seen_px = rec.pixels + rec.view_first[s];
+            seen_count = rec.view_first[s + 1] - rec.view_first[s];
+        } else {
+            if (d.pose && scene->mover_count) { /* golden-ratio times: every prefix spreads over the window */
+                double u = fmod((s + 0.5) * 0.6180339887498949, 1.0);
+                if (!(gpu = d.pose(d.pose_user, vc->t_begin + u * (vc->t_end - vc->t_begin), err, err_size)))
+                    goto done;
             }
+            double ts = tv_now_ms();
+            bool drawn = rnd_draw(ctx, target, gpu, &b.cams[s], NULL, 0, &full_st) &&
+                         rnd_target_read_ids(ctx, target, b.ids);
+            gt_sum_ms += tv_now_ms() - ts; /* the ground truth's own cost: one id render per sample */
+            if (!drawn || !rnd_target_read_color(ctx, target, b.full_rgba)) {
+                snprintf(err, err_size, "ground truth: drawing sample view %u failed (Vulkan error logged)", s);
+                goto done;
+            }
+            b.full_ms[s] = full_st.cpu_ms;
+            if (see.blend_count &&
+                !gt_seethrough_sample(&see, ctx, target, gpu, &b.cams[s], pixels, pvs_mask, b.unreliable,
+                                      scene->triangle_count, b.ids, gt, &fn, &fn_rel)) {
+                snprintf(err, err_size, "ground truth: the see-through pass of sample view %u failed (Vulkan error logged)", s);
+                goto done;
+            }
+            seen_count = view_histogram(&b, pixels, scene->triangle_count);
+            if (caching && !pvs_gt_record_add_view(&rec, seen, seen_px, seen_count)) {
+                snprintf(err, err_size, "ground truth: out of memory");
+                goto done;
+            }
+        }
+        for (uint32_t e = 0; e < seen_count; e++) {
+            uint32_t id = seen[e];
+            gt[id] = 1;
+            b.views[id] += b.views[id] < UINT8_MAX;
             if (!pvs_mask[id]) {
-                fn++;
-                fn_rel += !b.unreliable[id];
-                fn_dyn_sum += id >= first_dynamic;
+                fn += seen_px[e];
+                fn_rel += b.unreliable[id] ? 0 : seen_px[e];
+                fn_dyn_sum += id >= first_dynamic ? seen_px[e] : 0;
             }
         }
         fn_sum += (double)fn;
         fn_rel_sum += (double)fn_rel;
         if ((double)fn > out->fng_pixels_max)
             out->fng_pixels_max = (double)fn;
-        double psnr = rnd_psnr_rgb8(b.full_rgba, b.pvs_rgba, pixels, 4);
+        /* With a cached GT, a view without FN pixels renders the same with
+         * the PVS (gt_cache.h): no images to compare, one PVS draw timed. */
+        bool compare = !cached || fn > 0;
+        if (compare && cached && (!rnd_draw(ctx, target, gpu, &b.cams[s], NULL, 0, &full_st) ||
+                                  !rnd_target_read_color(ctx, target, b.full_rgba))) {
+            snprintf(err, err_size, "ground truth: drawing sample view %u failed (Vulkan error logged)", s);
+            goto done;
+        }
+        if ((compare || pvs_drawn == 0) &&
+            (!rnd_draw(ctx, target, gpu, &b.cams[s], pvs_ids, pvs_count, &pvs_st) ||
+             (compare && !rnd_target_read_color(ctx, target, b.pvs_rgba)))) {
+            snprintf(err, err_size, "ground truth: drawing sample view %u failed (Vulkan error logged)", s);
+            goto done;
+        }
+        if (compare || pvs_drawn == 0)
+            b.pvs_ms[pvs_drawn++] = pvs_st.cpu_ms;
+        double psnr = compare ? rnd_psnr_rgb8(b.full_rgba, b.pvs_rgba, pixels, 4) : INFINITY;
         if (psnr < out->psnr_min_db || s == 0) {
             out->psnr_min_db = psnr;
             out->worst_view = s;
         }
         if (isfinite(psnr)) /* back to the mean squared error the PSNR came from */
             sum_sq += 255.0 * 255.0 / pow(10.0, psnr / 10.0);
-        double ssim = rnd_ssim_rgb8(b.full_rgba, b.pvs_rgba, d.width, d.height, 4, b.ssim_scratch);
+        double ssim = compare ? rnd_ssim_rgb8(b.full_rgba, b.pvs_rgba, d.width, d.height, 4, b.ssim_scratch) : 1.0;
         ssim_sum += ssim;
         out->ssim_min = s == 0 ? ssim : fmin(out->ssim_min, ssim);
     }
@@ -350,9 +434,18 @@ bool pvs_evaluate(rnd_context* ctx, const rnd_gpu_scene* gpu, const scn_scene* s
     double mse = sum_sq / n;
     out->psnr_mean_db = mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
     out->ssim_mean = ssim_sum / n;
-    out->full_render_ms = tv_percentile(b.full_ms, n, 50.0);
-    out->pvs_render_ms = tv_percentile(b.pvs_ms, n, 50.0);
-    out->gt_ms = gt_sum_ms;
+    out->full_render_ms = cached ? rec.full_render_ms : tv_percentile(b.full_ms, n, 50.0);
+    out->pvs_render_ms = tv_percentile(b.pvs_ms, pvs_drawn, 50.0);
+    out->gt_ms = cached ? rec.gt_ms : gt_sum_ms; /* what the GT cost to sample, also when read back */
+    if (caching && !cached) {
+        rec.gt_ms = out->gt_ms;
+        rec.full_render_ms = out->full_render_ms;
+        char why[512];
+        if (pvs_gt_cache_store(file, key, &rec, why, sizeof why))
+            tv_log(TV_LOG_INFO, "gt cache: wrote %s", file);
+        else
+            tv_log(TV_LOG_WARN, "gt cache: %s", why);
+    }
     ok = true;
 done:
     if (target)
@@ -360,6 +453,7 @@ done:
     if (!gt_mask)
         free(gt);
     gt_seethrough_free(&see);
+    pvs_gt_record_free(&rec);
     free_buffers(&b);
     out->eval_ms = tv_now_ms() - t0;
     return ok;

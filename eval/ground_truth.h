@@ -41,6 +41,13 @@ typedef struct pvs_eval_desc {
      * the scene's current pose. */
     const rnd_gpu_scene* (*pose)(void* user, double t, char* err, size_t err_size);
     void* pose_user;
+    /* A folder of cached ground truths (gt_cache.h) and the scene's identity
+     * there (pvs_gt_scene_id): a viewcell whose GT is cached skips its id
+     * renders and draws only the views with FN pixels again; one that is not
+     * is computed and written. Both or neither; NULL: no cache. Not used for scenes with
+     * see-through triangles or with movers and `pose`. */
+    const char* gt_cache_dir;
+    const char* gt_cache_scene;
 } pvs_eval_desc;
 
 /* Fills `cams[0..n)` with the sample eye cameras of `vc` (deterministic for

@@ -21,15 +21,7 @@ parallel --will-cite -j2 <"$out/jobs.txt" >"$out/parallel.log" 2>&1 || { tail -5
 t2=$(date +%s)
 "$trimvr" bench merge --out "$out/merged" "$out"/parts/part-*.json || { echo "FAIL: merge"; exit 1; }
 echo "serial $((t1 - t0)) s, $(wc -l <"$out/jobs.txt") shards under parallel -j2 $((t2 - t1)) s"
-awk -F, 'NR == FNR { if (FNR == 1) { head = $0; for (i = 1; i <= NF; i++) if ($i ~ /_ms$/ || $i == "pvs_over_full") skip[i] = 1 }
-                     else row[FNR] = $0
-                     na = FNR; next }
-         FNR == 1 { if ($0 != head) { print "FAIL: headers differ"; bad = 1 } next }
-         { split(row[FNR], a, ","); nb = FNR
-           for (i = 1; i <= NF; i++) if (!skip[i] && a[i] != $i) { print "FAIL: row " FNR - 1 " column " i ": " a[i] " (serial) vs " $i " (merged)"; bad = 1 } }
-         END { if (na != nb) { print "FAIL: " na - 1 " serial rows, " nb - 1 " merged"; bad = 1 }
-               if (bad) exit 1
-               print "ok: " na - 1 " rows equal in every non-timing column" }' "$out/serial/bench.csv" "$out/merged/bench.csv" || exit 1
+sh "$(dirname "$0")/csv_equal.sh" "$out/serial/bench.csv" "$out/merged/bench.csv" serial merged || exit 1
 
 # refuse: expect exit 1 and one stderr line containing $1 and $2
 refuse() {
