@@ -1,8 +1,9 @@
 // pvs_trim.glsl - the trim quad and umbra quad of one silhouette edge: the
-// GLSL twin of pvs_trim_width_px (pvs/trim_width.c) and pvs_umbra_quad_make
-// (pvs/umbra.c), in normalised image units (focal length 1), plus what the
-// C references leave to P1: clipping the edge at the near plane and
-// clamping infinite widths.
+// GLSL twin of pvs_trim_width_px (pvs/trim_width.c), pvs_umbra_far_depth,
+// pvs_umbra_corner_depth and pvs_umbra_quad_make (pvs/umbra.c) and
+// pvs_depth_bound_query (pvs/depth_bound.c), in normalised image units
+// (focal length 1), plus what the C references leave to P1: clipping the
+// edge at the near plane and clamping infinite widths.
 #ifndef TV_PVS_TRIM_GLSL
 #define TV_PVS_TRIM_GLSL
 
@@ -75,8 +76,8 @@ float pvs_depth_bound_query(vec2 lo, vec2 hi)
 float pvs_footprint_far(vec2 i0, vec2 i1, float d0, float d1)
 {
     float dmin = min(d0, d1);
-    if (dmin <= 2.0 * view.delta / view.tan_alpha)
-        return view.far_dist;
+    if (dmin <= 2.0 * view.delta / view.tan_alpha || dmin >= view.far_dist)
+        return view.far_dist; // no finite reach, or no width to narrow
     float reach = view.focal_px * pvs_cone_max(dmin, max(length(i0), length(i1)), view.far_dist) + 1.0;
     vec2 centre = 0.5 * vec2(view.width, view.height);
     vec2 lo = centre + min(i0, i1) * view.focal_px - reach, hi = centre + max(i0, i1) * view.focal_px + reach;
