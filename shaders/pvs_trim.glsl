@@ -168,8 +168,10 @@ bool pvs_trim_quad(vec3 e0, vec3 e1, vec3 inside, bool has_back, vec3 nb, vec3 p
     if (side > 0.0)
         n = -n; // n points away from the occluder
     float behind = pvs_footprint_far(i0, i1, d0, d1);
-    vec2 w = vec2(pvs_trim_width(d0, dot(i0, n), behind), pvs_trim_width(d1, dot(i1, n), behind));
     vec2 wf = vec2(pvs_trim_width(d0, dot(i0, n), view.far_dist), pvs_trim_width(d1, dot(i1, n), view.far_dist));
+    // A narrowed width keeps TV_PVS_TRIM_SLACK_PX more, never beyond the far-plane one.
+    vec2 w = min(wf, vec2(pvs_trim_width(d0, dot(i0, n), behind), pvs_trim_width(d1, dot(i1, n), behind)) +
+                         TV_PVS_TRIM_SLACK_PX / view.focal_px);
     vec2 x0 = i0 - w.x * n, x1 = i1 - w.y * n;
     c[0] = e0;
     c[1] = e1;

@@ -260,7 +260,7 @@ static void test_box_seen_through_a_gap(void)
     uint32_t m = constructed_scene(&f);
     add_box(&f.scene, -4.0f, -3.0f, -2.1f, -0.05f, 3.0f, -2.0f, m);
     add_box(&f.scene, 0.05f, -3.0f, -2.1f, 4.0f, 3.0f, -2.0f, m);
-    uint32_t through = add_box(&f.scene, 0.2f, -0.3f, -4.5f, 0.5f, 0.3f, -4.2f, m);
+    uint32_t through = add_box(&f.scene, 0.25f, -0.3f, -4.5f, 0.55f, 0.3f, -4.2f, m);
     uint32_t hidden = add_box(&f.scene, 3.0f, -0.5f, -12.0f, 4.0f, 0.5f, -11.0f, m);
     check_configuration(&f, "a box seen only through a gap", 0.3f, FN_SIMPLE, &hidden, 1, &through, 1);
 }
