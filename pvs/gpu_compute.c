@@ -110,6 +110,8 @@ static void write_view(pvs_context* ctx, const pvs_viewcell* vc, const rnd_camer
         g.up[i] = fr.up[i];
     }
     memcpy(ctx->buffers[TV_PVS_BIND_VIEW].mapped, &g, sizeof g);
+    memcpy((char*)ctx->buffers[TV_PVS_BIND_VIEW].mapped + sizeof g, ctx->depth_bound.cells,
+           sizeof(float) * ctx->depth_bound.cell_count);
 }
 
 /* All writes of the commands so far made visible to `dst_stage` / `dst_access`. */
@@ -554,6 +556,10 @@ bool pvs_compute_dynamic(pvs_context* ctx, const pvs_viewcell* vc, const pvs_pro
         return false;
     memset(ctx->per_layer, 0, sizeof *ctx->per_layer * L->layer_count);
     memcpy(ctx->buffers[TV_PVS_BIND_LAYER_TRIS].mapped, L->tri_ids, sizeof(uint32_t) * L->tri_count);
+    pvs_depth_bound_begin(&ctx->depth_bound, &view);
+    pvs_depth_bound_add_ids(&ctx->depth_bound, L->tri_ids, L->tri_count, ctx->tri_corners, ctx->triangle_count,
+                            ctx->buffers[TV_PVS_BIND_PROXIES].mapped);
+    pvs_depth_bound_finish(&ctx->depth_bound);
     write_view(ctx, vc, &cam, &view);
     st->ms[0] = tv_now_ms() - start;
 

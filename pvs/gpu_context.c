@@ -115,7 +115,7 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         uint32_t binding;
         VkDeviceSize size;
     } fixed[] = {
-        {TV_PVS_BIND_VIEW, sizeof(pvs_view_gpu)},
+        {TV_PVS_BIND_VIEW, sizeof(pvs_view_gpu) + sizeof(float) * (VkDeviceSize)ctx->depth_bound.cell_count},
         {TV_PVS_BIND_ADJ, tris * 12},
         {TV_PVS_BIND_LAYER_TRIS, drawn * 4},
         {TV_PVS_BIND_COUNTERS, TV_PVS_C_COUNT * 4},
@@ -281,6 +281,23 @@ static bool check_desc(const pvs_desc* d, char* err, size_t err_size)
     return true;
 }
 
+/* The triangles' corners and the depth bound's cells P0 fills per
+ * computation for P1 (pvs/depth_bound.h); before create_fixed_buffers. */
+static bool create_depth_bound(pvs_context* ctx, const scn_scene* scene, char* err, size_t err_size)
+{
+    ctx->tri_corners = malloc(sizeof(float) * 9 * ((size_t)scene->triangle_count + 1));
+    if (!ctx->tri_corners || !pvs_depth_bound_init(&ctx->depth_bound, ctx->width, ctx->height)) {
+        snprintf(err, err_size, "pvs: out of memory for the corners of %u triangles", scene->triangle_count);
+        return false;
+    }
+    for (size_t t = 0; t < scene->triangle_count; t++) {
+        for (int c = 0; c < 3; c++)
+            memcpy(ctx->tri_corners + 9 * t + 3 * c, scene->positions + 3 * (size_t)scene->indices[3 * t + c],
+                   3 * sizeof(float));
+    }
+    return true;
+}
+
 pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu, const pvs_desc* desc,
                         char* err, size_t err_size)
 {
@@ -337,7 +354,7 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     }
     bool ok = pvs_octree_build(&od, &statics, &ctx->octree, err, err_size) &&
               rnd_stream_create(rnd, &ctx->stream, err, err_size) && pvs_pipelines_create(ctx, err, err_size) &&
-              create_fixed_buffers(ctx, err, err_size) &&
+              create_depth_bound(ctx, scene, err, err_size) && create_fixed_buffers(ctx, err, err_size) &&
               rnd_descriptor_set_create(rnd, ctx->set_layout, pool_sizes, 2, &ctx->pool, &ctx->set, err, err_size) &&
               pvs_reserve(ctx, 1, 1, err, err_size) && upload_adjacency(ctx, scene, err, err_size);
     if (!ok) {
@@ -378,5 +395,7 @@ void pvs_destroy(pvs_context* ctx)
     free(ctx->reasons);
     free(ctx->per_layer);
     free(ctx->proxy_always);
+    free(ctx->tri_corners);
+    pvs_depth_bound_free(&ctx->depth_bound);
     free(ctx);
 }

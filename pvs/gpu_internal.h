@@ -4,6 +4,7 @@
 #ifndef TRIMVR_PVS_GPU_INTERNAL_H
 #define TRIMVR_PVS_GPU_INTERNAL_H
 
+#include "depth_bound.h"
 #include "layers.h"
 #include "octree.h"
 #include "proxies.h"
@@ -64,6 +65,8 @@ struct pvs_context {
     uint32_t max_layers; /* pvs_desc.max_layers */
     pvs_proxy_sort proxy_sort;
     bool* proxy_always; /* max_proxies entries: pvs_proxies_sort's `always` */
+    float* tri_corners;        /* 9 floats per scene triangle, for depth_bound */
+    pvs_depth_bound depth_bound; /* per computation; its cells follow pvs_view_gpu in TV_PVS_BIND_VIEW */
 
     rnd_stream stream;
     VkQueryPool timestamps; /* 2 per phase-step, VK_NULL_HANDLE when unsupported */

@@ -21,6 +21,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
     uint width, height, k, triangle_count; // width, height: the whole image
     uint tile_x, tile_y, tile_w, tile_h;    // the tile being computed (pvs/tiles.h): per-pixel buffers index it
     uint explain, pad0, pad1, pad2;         // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain)
+    float depth_bound[];                    // pvs/depth_bound.h's cells, all levels (pvs_trim.glsl)
 } view;
 
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ADJ) readonly buffer pvs_adj_buf { uint adjacency[]; };

@@ -51,6 +51,15 @@
  * Sponza and the city, 0.3 lost 0.1 px and 0.1 lost 6 px on Sponza at 20 cm
  * (docs/trim-regions.md). */
 #define TV_PVS_GRAZING_COS 0.5
+/* Side in pixels of the finest cell of the far-depth bound that narrows the
+ * trim widths (pvs/depth_bound.h, docs/trim-width.md). */
+#define TV_PVS_DEPTH_CELL_PX 8u
+/* Pixels a width narrowed by that bound keeps beyond the exact one (up to
+ * the far-plane width): the far-plane widths' slack had covered sub-pixel
+ * sampling differences between the eyes and v* pixel centres; without it
+ * false-negative pixels rose on builtin:city, sponza and oasago2
+ * (docs/trim-width.md). */
+#define TV_PVS_TRIM_SLACK_PX 1.0
 /* Widest gap (scene units, metres) between two border edges that counts as
  * a crack (scn_mark_cracks): Sponza's decimated columns gape up to ~1.2 cm
  * at their corners. */

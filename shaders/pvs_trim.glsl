@@ -1,8 +1,9 @@
 // pvs_trim.glsl - the trim quad and umbra quad of one silhouette edge: the
-// GLSL twin of pvs_trim_width_px (pvs/trim_width.c) and pvs_umbra_quad_make
-// (pvs/umbra.c), in normalised image units (focal length 1), plus what the
-// C references leave to P1: clipping the edge at the near plane and
-// clamping infinite widths.
+// GLSL twin of pvs_trim_width_px (pvs/trim_width.c), pvs_umbra_far_depth,
+// pvs_umbra_corner_depth and pvs_umbra_quad_make (pvs/umbra.c) and
+// pvs_depth_bound_query (pvs/depth_bound.c), in normalised image units
+// (focal length 1), plus what the C references leave to P1: clipping the
+// edge at the near plane and clamping infinite widths.
 #ifndef TV_PVS_TRIM_GLSL
 #define TV_PVS_TRIM_GLSL
 
@@ -21,24 +22,77 @@ vec3 pvs_unproject(vec2 image, float depth)
     return view.apex.xyz + depth * (view.forward.xyz + image.x * view.right.xyz + image.y * view.up.xyz);
 }
 
-float pvs_displacement(float a, float r, float depth, float sigma)
+// The C reference's cone_max (pvs/trim_width.c): (far - d) / far times the
+// larger of (Δ + z s) / (d - z) and 2 z s / (d - 2z), s = -sigma_n for the
+// inward width, |sigma| for the reach in any direction.
+float pvs_cone_max(float depth, float s, float far)
 {
-    return (r - a * sigma) * (view.far_dist - depth) / (view.far_dist * (depth - a));
+    float z = view.delta / view.tan_alpha;
+    float base = (view.delta + z * s) / (depth - z), tip = 2.0 * z * s / (depth - 2.0 * z);
+    return max(0.0, max(base, tip)) * (far - depth) / far;
 }
 
 // Inward extrusion of a silhouette point at `depth` with outward image
-// coordinate sigma; one pixel is added for the pixel-centre sampling of the
-// edge itself, and the infinite widths near v* are clamped to the image.
-float pvs_trim_width(float depth, float sigma)
+// coordinate sigma, when nothing behind it lies beyond `far`; one pixel is
+// added for the pixel-centre sampling of the edge itself, and the infinite
+// widths near v* are clamped to the image.
+float pvs_trim_width(float depth, float sigma, float far)
 {
-    float z = view.delta / view.tan_alpha;
-    if (depth >= view.far_dist)
-        return 1.0 / view.focal_px;
-    if (depth <= 2.0 * z)
+    if (depth <= 2.0 * view.delta / view.tan_alpha)
         return view.max_width;
-    float base = pvs_displacement(z, view.delta, depth, sigma);
-    float tip = pvs_displacement(2.0 * z, 0.0, depth, sigma);
-    return min(max(0.0, max(base, tip)) + 1.0 / view.focal_px, view.max_width);
+    if (depth >= far)
+        return 1.0 / view.focal_px;
+    return min(pvs_cone_max(depth, -sigma, far) + 1.0 / view.focal_px, view.max_width);
+}
+
+uvec2 pvs_depth_cell(vec2 px, uvec2 cells)
+{
+    return uvec2(clamp(floor(px / float(TV_PVS_DEPTH_CELL_PX)), vec2(0.0), vec2(cells - 1u)));
+}
+
+// pvs_depth_bound_query (pvs/depth_bound.c) over pixel rectangle [lo, hi].
+float pvs_depth_bound_query(vec2 lo, vec2 hi)
+{
+    uvec2 dims = (uvec2(view.width, view.height) + TV_PVS_DEPTH_CELL_PX - 1u) / TV_PVS_DEPTH_CELL_PX;
+    uvec2 c0 = pvs_depth_cell(lo, dims), c1 = pvs_depth_cell(hi, dims);
+    uint offset = 0u;
+    while (c1.x - c0.x > 1u || c1.y - c0.y > 1u) {
+        offset += dims.x * dims.y;
+        dims = (dims + 1u) / 2u;
+        c0 >>= 1u;
+        c1 >>= 1u;
+    }
+    float m = 0.0;
+    for (uint y = c0.y; y <= c1.y; y++) {
+        for (uint x = c0.x; x <= c1.x; x++)
+            m = max(m, view.depth_bound[offset + y * dims.x + x]);
+    }
+    return m;
+}
+
+// pvs_umbra_far_depth (pvs/umbra.c): the depth bound over the edge's image
+// widened by the reach of what the viewcell sees past it up to the far
+// plane, which replaces the far plane in the widths (docs/trim-width.md).
+float pvs_footprint_far(vec2 i0, vec2 i1, float d0, float d1)
+{
+    float dmin = min(d0, d1);
+    if (dmin <= 2.0 * view.delta / view.tan_alpha || dmin >= view.far_dist)
+        return view.far_dist; // no finite reach, or no width to narrow
+    float reach = view.focal_px * pvs_cone_max(dmin, max(length(i0), length(i1)), view.far_dist) + 1.0;
+    vec2 centre = 0.5 * vec2(view.width, view.height);
+    vec2 lo = centre + min(i0, i1) * view.focal_px - reach, hi = centre + max(i0, i1) * view.focal_px + reach;
+    return pvs_depth_bound_query(lo, hi);
+}
+
+// pvs_umbra_corner_depth (pvs/umbra.c): where the line from a vertex at
+// `depth` to the far-plane point `far_width` inwards meets the ray `width`
+// inwards, so that the umbra is the far-plane one cut to the trim's footprint.
+float pvs_umbra_depth(float depth, float width, float far_width)
+{
+    if (depth >= view.far_dist)
+        return view.far_dist;
+    float a = far_width * view.far_dist / (view.far_dist - depth);
+    return clamp(a * depth / (a - width), depth, view.far_dist);
 }
 
 // Depth at which the v* ray through `image` meets the plane (n, p), or
@@ -113,8 +167,12 @@ bool pvs_trim_quad(vec3 e0, vec3 e1, vec3 inside, bool has_back, vec3 nb, vec3 p
         return false;
     if (side > 0.0)
         n = -n; // n points away from the occluder
-    vec2 x0 = i0 - pvs_trim_width(d0, dot(i0, n)) * n;
-    vec2 x1 = i1 - pvs_trim_width(d1, dot(i1, n)) * n;
+    float behind = pvs_footprint_far(i0, i1, d0, d1);
+    vec2 wf = vec2(pvs_trim_width(d0, dot(i0, n), view.far_dist), pvs_trim_width(d1, dot(i1, n), view.far_dist));
+    // A narrowed width keeps TV_PVS_TRIM_SLACK_PX more, never beyond the far-plane one.
+    vec2 w = min(wf, vec2(pvs_trim_width(d0, dot(i0, n), behind), pvs_trim_width(d1, dot(i1, n), behind)) +
+                         TV_PVS_TRIM_SLACK_PX / view.focal_px);
+    vec2 x0 = i0 - w.x * n, x1 = i1 - w.y * n;
     c[0] = e0;
     c[1] = e1;
     vec3 t1 = pvs_trim_depth(x1, d1, nf, pf, has_back, nb, pb), t0 = pvs_trim_depth(x0, d0, nf, pf, has_back, nb, pb);
@@ -127,8 +185,8 @@ bool pvs_trim_quad(vec3 e0, vec3 e1, vec3 inside, bool has_back, vec3 nb, vec3 p
     vec3 view_ray = normalize(0.5 * (e0 + e1) - view.apex.xyz);
     bool grazing = abs(dot(normalize(nf), view_ray)) < TV_PVS_GRAZING_COS;
     far = grazing ? vec2(t1.z, t0.z) : vec2(0.0);
-    c[4] = pvs_unproject(x1, view.far_dist);
-    c[5] = pvs_unproject(x0, view.far_dist);
+    c[4] = pvs_unproject(x1, pvs_umbra_depth(d1, w.y, wf.y));
+    c[5] = pvs_unproject(x0, pvs_umbra_depth(d0, w.x, wf.x));
     return true;
 }
 

@@ -2,7 +2,8 @@
  * configurations, each with the triangles it must hide and keep:
  * interpenetrating occluders, thin walls, umbrae inside umbrae, occluders
  * across layers, back faces past edges, culled backs, cracks, slivers,
- * openings at the view edge and coincident twins (pvs_gpu_fixture.h). */
+ * openings at the view edge and through a gap, and coincident twins
+ * (pvs_gpu_fixture.h). */
 #include "pvs_gpu_checks.h"
 #include "pvs_shared.h"
 
@@ -247,6 +248,23 @@ static void test_small_opening_at_view_edge(void)
     check_configuration(&f, "small opening at the edge of the view", 0.05f, FN_SLIVER, &hidden, 1, &through, 1);
 }
 
+/* Two walls 2 m away with a 10 cm vertical gap, and a box 4.2 m away beside
+ * the gap, hidden from v0 and v* but seen through the gap from the viewcell's
+ * left rim. Nothing else lies behind the gap, so the bound of the scene's
+ * depth behind the gap's edges is the box's own (docs/trim-width.md): were
+ * the box missing from the bound, the widths would shrink to a pixel and
+ * the box would be culled. A box deep behind the right wall stays hidden. */
+static void test_box_seen_through_a_gap(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -4.0f, -3.0f, -2.1f, -0.05f, 3.0f, -2.0f, m);
+    add_box(&f.scene, 0.05f, -3.0f, -2.1f, 4.0f, 3.0f, -2.0f, m);
+    uint32_t through = add_box(&f.scene, 0.25f, -0.3f, -4.5f, 0.55f, 0.3f, -4.2f, m);
+    uint32_t hidden = add_box(&f.scene, 3.0f, -0.5f, -12.0f, 4.0f, 0.5f, -11.0f, m);
+    check_configuration(&f, "a box seen only through a gap", 0.3f, FN_SIMPLE, &hidden, 1, &through, 1);
+}
+
 /* A room whose ceiling is two coincident double-sided quads of opposite
  * winding (a zero-thickness surface as some exporters write it), large enough
  * to pass behind v*: such triangles cross the near plane and are drawn
@@ -379,6 +397,7 @@ int main(void)
     TV_TEST_RUN(test_sliver_seen_from_behind);
     TV_TEST_RUN(test_crack_in_a_pillar);
     TV_TEST_RUN(test_small_opening_at_view_edge);
+    TV_TEST_RUN(test_box_seen_through_a_gap);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_culled_twin_of_a_wall);
     TV_TEST_RUN(test_explain_names_the_rules);
