@@ -117,7 +117,10 @@ void main()
     bool see = v_see != 0u;
     if (see && (pc.kind & TV_PVS_KIND_WIDE) == 0u)
         discard;
-    if (!see && tv_alpha_masked(v_material, tv_material_color(v_material, v_uv).a))
+    // the colour (a texture fetch) only for a masked material: llvmpipe
+    // evaluates a call's arguments for every fragment
+    if (!see && (tv_materials[v_material].flags & TV_MAT_ALPHA_MASK) != 0u &&
+        tv_alpha_masked(v_material, tv_material_color(v_material, v_uv).a))
         discard;
     uint p = pvs_pixel();
     if ((v_id_flags & TV_ID_CULLED) != 0u) {
@@ -182,7 +185,7 @@ void main()
     if (pvs_sealed(p)) { // a face of a later layer in front of the terminator (pvs_sealed_output)
         if (pvs_sealed_output(p, w))
             pvs_mark(v_triangle, TV_REASON_SEALED);
-    } else if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
+    } else if ((kind == pc.kind || pvs_resolves(p)) && !pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
         // overflow policy: left to the spill draws after P3, which draw
         // only the triangles listed here (once per layer: the stamp)
         atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);
