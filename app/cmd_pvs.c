@@ -49,8 +49,10 @@ static void print_run(int i, const pvs_method_stats* st, pvs_method_kind kind)
         printf("run %-13d total %.2f\n", i, st->total_ms);
 }
 
-/* The same request again: a computation depends on nothing but its request,
- * so the ids must equal the first's. */
+/* The same request again. The ids may differ from the first's where a
+ * k-buffer overflows: P1 appends the draw lists with atomics, so the order
+ * in which fronts reach a full list follows the threads' timing (a warning,
+ * docs/pvs-gpu-passes.md, "Cost per phase"). */
 static bool compute_again(pvs_method* m, const pvs_request* req, const uint32_t* ids, uint32_t count,
                           pvs_method_stats* st, char* err, size_t err_size)
 {
@@ -59,11 +61,11 @@ static bool compute_again(pvs_method* m, const pvs_request* req, const uint32_t*
     *st = (pvs_method_stats){0};
     if (!pvs_method_compute(m, req, &again, &n, st, err, err_size))
         return false;
-    bool same = n == count && (n == 0 || memcmp(again, ids, sizeof(uint32_t) * n) == 0);
+    if (n != count || (n && memcmp(again, ids, sizeof(uint32_t) * n) != 0))
+        tv_log(TV_LOG_WARN, "--repeat: a computation gave other ids than the first (%u triangles, first %u)", n,
+               count);
     free(again);
-    if (!same)
-        snprintf(err, err_size, "--repeat: a computation gave other ids than the first (%u, first %u)", n, count);
-    return same;
+    return true;
 }
 
 int tv_cmd_pvs(int argc, char** argv)

@@ -182,11 +182,8 @@ static void draw_indirect(pvs_context* ctx, VkCommandBuffer cmd, int pipe, uint3
 typedef enum pass_kind { PASS_CLEAR, PASS_LAYER, PASS_SPILL } pass_kind;
 
 /* One dynamic-rendering pass on visibility buffer `vis` (0 exact, 1 wide)
- * over tile `t`: clear only, P2's draws of the current layer (the exact pass
- * the faces and the trim quads; the wide pass the faces dilated, for the
- * visibility buffer, and the umbra quads: after the exact pass, it knows
- * which pixels the trims activated and stores k-buffer entries only where
- * P3 will resolve, pvs_resolves), or the spill
+ * over tile `t`: clear only, P2's draws of the current layer (the wide pass
+ * draws the faces only, dilated, for the visibility buffer), or the spill
  * draw after P3 (exact; it changes neither attachment: every fragment ties in
  * depth). The viewport is the whole image's and the tile a scissor, so every
  * pixel rasterises exactly as without tiling (an offset viewport would round
@@ -225,8 +222,10 @@ static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
         const uint32_t wide = vis ? TV_PVS_KIND_WIDE : 0u;
         draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | wide, TV_PVS_C_DRAW_FF);
         draw_indirect(ctx, cmd, PVS_PIPE_BF, TV_PVS_KIND_BACK | wide, TV_PVS_C_DRAW_BF);
-        draw_indirect(ctx, cmd, vis ? PVS_PIPE_UMBRA : PVS_PIPE_TRIM, vis ? TV_PVS_KIND_UMBRA : TV_PVS_KIND_TRIM,
-                      vis ? TV_PVS_C_DRAW_UMBRA : TV_PVS_C_DRAW_TRIM);
+        if (!vis) {
+            draw_indirect(ctx, cmd, PVS_PIPE_TRIM, TV_PVS_KIND_TRIM, TV_PVS_C_DRAW_TRIM);
+            draw_indirect(ctx, cmd, PVS_PIPE_UMBRA, TV_PVS_KIND_UMBRA, TV_PVS_C_DRAW_UMBRA);
+        }
     }
     vkCmdEndRendering(cmd);
 }

@@ -63,14 +63,6 @@ void pvs_mark(uint id, uint reason)
     else
         tri_flags[id] = 1u;
 }
-
-// Whether P3 resolves pixel `p` in this layer: it is trimmed already (any
-// entry activates it, pvs_kbuffer.glsl), or a trim of this layer activated
-// it. Only trims activate an untrimmed pixel and the exact pass draws them,
-// so in the wide pass, after its barrier, the answer is final: an entry
-// pushed where it is false is never read (pvs_resolve_pixel returns early at
-// an untrimmed pixel without trims; P3 runs over active pixels only).
-bool pvs_resolves(uint p) { return pixstate[p].x != TV_STENCIL_UNTRIMMED || active_flag[p] != 0u; }
 #endif
 
 #endif

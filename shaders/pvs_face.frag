@@ -185,7 +185,7 @@ void main()
     if (pvs_sealed(p)) { // a face of a later layer in front of the terminator (pvs_sealed_output)
         if (pvs_sealed_output(p, w))
             pvs_mark(v_triangle, TV_REASON_SEALED);
-    } else if ((kind == pc.kind || pvs_resolves(p)) && !pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
+    } else if (!pvs_push(p, kind, w, id) && kind == TV_PVS_KIND_FRONT) {
         // overflow policy: left to the spill draws after P3, which draw
         // only the triangles listed here (once per layer: the stamp)
         atomicAdd(counters[TV_PVS_C_OVERFLOW_FRONTS], 1u);

@@ -11,7 +11,6 @@ void main()
 {
     o_unused = 0u;
     uint p = pvs_pixel();
-    // umbrae, drawn in the wide pass: nothing to store where P3 does not resolve
-    if (!pvs_sealed(p) && (pc.kind == TV_PVS_KIND_TRIM || pvs_resolves(p)))
+    if (!pvs_sealed(p))
         pvs_push(p, pc.kind, pvs_depth(), v_region);
 }

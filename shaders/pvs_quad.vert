@@ -17,7 +17,6 @@
 
 layout(location = 0) flat out uint v_region;
 
-
 void main()
 {
     uint slot = uint(gl_VertexIndex) / 6u;
