@@ -91,8 +91,8 @@ int tv_cmd_pvs(int argc, char** argv)
         TV_ARG_METHOD(&method),
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
         {"repeat", TV_ARG_INT, &repeat, "N",
-         "compute N times in one context and print the fastest (the first pays first touches and shader "
-         "compiles; default 1)"},
+         "compute N times in one context, one timing line each, statistics of the last (the first pays "
+         "first touches and shader compiles; default 1)"},
     };
     tv_args_result r = tv_args_parse("pvs", "Computes the PVS of one viewcell and prints a summary.", args,
                                      (int)(sizeof args / sizeof args[0]), argc, argv);
