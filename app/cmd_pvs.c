@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static void print_tr_stats(const pvs_stats* s)
 {
@@ -37,12 +38,42 @@ static void print_tr_stats(const pvs_stats* s)
     }
 }
 
+/* --repeat: one line per computation (the first pays first touches and
+ * shader compiles, the later ones are what a long-running app pays). */
+static void print_run(int i, const pvs_method_stats* st, pvs_method_kind kind)
+{
+    if (kind == PVS_METHOD_TR)
+        printf("run %-13d P1 %.2f  P2 %.2f  P3 %.2f  (total %.2f)\n", i, st->tr.ms[1], st->tr.ms[2], st->tr.ms[3],
+               st->total_ms);
+    else
+        printf("run %-13d total %.2f\n", i, st->total_ms);
+}
+
+/* The same request again. The ids may differ from the first's where a
+ * k-buffer overflows: P1 appends the draw lists with atomics, so the order
+ * in which fronts reach a full list follows the threads' timing (a warning,
+ * docs/pvs-gpu-passes.md, "Cost per phase"). */
+static bool compute_again(pvs_method* m, const pvs_request* req, const uint32_t* ids, uint32_t count,
+                          pvs_method_stats* st, char* err, size_t err_size)
+{
+    uint32_t* again = NULL;
+    uint32_t n = 0;
+    *st = (pvs_method_stats){0};
+    if (!pvs_method_compute(m, req, &again, &n, st, err, err_size))
+        return false;
+    if (n != count || (n && memcmp(again, ids, sizeof(uint32_t) * n) != 0))
+        tv_log(TV_LOG_WARN, "--repeat: a computation gave other ids than the first (%u triangles, first %u)", n,
+               count);
+    free(again);
+    return true;
+}
+
 int tv_cmd_pvs(int argc, char** argv)
 {
     const char *scene = NULL, *method = "tr", *ids_out = NULL;
     float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
-    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS;
+    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS, repeat = 1;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
@@ -59,6 +90,9 @@ int tv_cmd_pvs(int argc, char** argv)
          "tr: compute the image in tiles of at most N pixels (default 262144 = 512x512)"},
         TV_ARG_METHOD(&method),
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
+        {"repeat", TV_ARG_INT, &repeat, "N",
+         "compute N times in one context, one timing line each, statistics of the last (the first pays "
+         "first touches and shader compiles; default 1)"},
     };
     tv_args_result r = tv_args_parse("pvs", "Computes the PVS of one viewcell and prints a summary.", args,
                                      (int)(sizeof args / sizeof args[0]), argc, argv);
@@ -72,7 +106,8 @@ int tv_cmd_pvs(int argc, char** argv)
     pred_viewcell vc;
     if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
         !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0") ||
-        !tv_arg_require("max-layers", max_layers, max_layers >= -1, ">= -1"))
+        !tv_arg_require("max-layers", max_layers, max_layers >= -1, ">= -1") ||
+        !tv_arg_require("repeat", repeat, repeat >= 1, ">= 1"))
         return 2;
     if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc)) {
         tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "
@@ -98,7 +133,14 @@ int tv_cmd_pvs(int argc, char** argv)
     pvs_method_stats st = {0};
     if (!proxies)
         snprintf(err, sizeof err, "out of memory");
-    if (!m || !proxies || !pvs_method_compute(m, &req, &ids, &count, &st, err, sizeof err)) {
+    bool ok = m && proxies && pvs_method_compute(m, &req, &ids, &count, &st, err, sizeof err);
+    for (int i = 1; ok && i < repeat; i++) {
+        print_run(i, &st, md.kind);
+        ok = compute_again(m, &req, ids, count, &st, err, sizeof err);
+    }
+    if (ok && repeat > 1)
+        print_run(repeat, &st, md.kind);
+    if (!ok) {
         tv_log(TV_LOG_ERROR, "%s", err);
         status = 1;
     } else {

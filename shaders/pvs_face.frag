@@ -117,7 +117,10 @@ void main()
     bool see = v_see != 0u;
     if (see && (pc.kind & TV_PVS_KIND_WIDE) == 0u)
         discard;
-    if (!see && tv_alpha_masked(v_material, tv_material_color(v_material, v_uv).a))
+    // the colour (a texture fetch) only for a masked material: llvmpipe
+    // evaluates a call's arguments for every fragment
+    if (!see && (tv_materials[v_material].flags & TV_MAT_ALPHA_MASK) != 0u &&
+        tv_alpha_masked(v_material, tv_material_color(v_material, v_uv).a))
         discard;
     uint p = pvs_pixel();
     if ((v_id_flags & TV_ID_CULLED) != 0u) {
@@ -125,13 +128,11 @@ void main()
         // the interval its front opened (pvs_resolve.glsl), so the exact pass
         // stores it and keeps it apart as a prior face, and nothing else sees
         // it: no visibility-buffer id (the discard keeps those stores), no
-        // candidate.
-        if (pc.kind == TV_PVS_KIND_BACK) {
-            w *= 1.0 + TV_PVS_CULLED_NUDGE; // behind a coincident front twin
-            atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED], floatBitsToUint(w));
-            if (!pvs_sealed(p))
-                pvs_push(p, TV_PVS_KIND_BACK, w, v_triangle | v_id_flags);
-        }
+        // candidate (the dilated pass does not draw it, pvs_face.vert).
+        w *= 1.0 + TV_PVS_CULLED_NUDGE; // behind a coincident front twin
+        atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED], floatBitsToUint(w));
+        if (!pvs_sealed(p))
+            pvs_push(p, TV_PVS_KIND_BACK, w, v_triangle | v_id_flags);
         discard;
     }
     o_triangle = v_triangle;

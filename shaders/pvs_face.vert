@@ -100,6 +100,20 @@ void main()
     uint listed = (pc.kind & TV_PVS_KIND_SPILL) != 0u ? spill_list[TV_PVS_SPILL_ENTRY(slot)]
                   : (pc.kind & ~TV_PVS_KIND_WIDE) == TV_PVS_KIND_FRONT ? ff_list[slot] : bf_list[slot];
     uint tri = listed & ~(TV_ID_CULLED | TV_ID_STRADDLED);
+    v_triangle = tri;
+    v_id_flags = listed & ~tri;
+    if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && (listed & TV_ID_CULLED) != 0u) {
+        // a culled back has nothing to do in the dilated pass (pvs_face.frag
+        // discards all of it): a degenerate triangle, no fragments
+        gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
+        v_uv = vec2(0.0);
+        v_material = 0u;
+        v_s01 = vec4(0.0);
+        v_s2 = vec3(0.0);
+        v_far = v_near = 0.0;
+        v_see = 0u;
+        return;
+    }
     vec4 c[3];
     for (uint i = 0u; i < 3u; i++)
         c[i] = view.view_proj * vec4(pvs_corner(tri, i), 1.0);
@@ -142,8 +156,6 @@ void main()
         }
     }
     gl_Position = pos;
-    v_triangle = tri;
-    v_id_flags = listed & ~tri;
     v_see = pvs_seethrough(tri) ? 1u : 0u;
     v_material = pvs_material(tri);
 }

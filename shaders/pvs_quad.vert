@@ -17,12 +17,12 @@
 
 layout(location = 0) flat out uint v_region;
 
-const uint quad_corner[6] = uint[6](0u, 1u, 2u, 0u, 2u, 3u);
-
 void main()
 {
     uint slot = uint(gl_VertexIndex) / 6u;
-    uint corner = quad_corner[uint(gl_VertexIndex) - slot * 6u];
+    // corners 0 1 2 0 2 3, a nibble each: a constant array indexed at run
+    // time costs every invocation an array copy on llvmpipe (pvs_geometry.glsl)
+    uint corner = (0x320210u >> (4u * (uint(gl_VertexIndex) - slot * 6u))) & 15u;
     uint base = slot * TV_PVS_SIL_VEC4;
     // corners 2, 3 are record entries 2, 3 (trim) or 4, 5 (umbra)
     uint entry = corner < 2u ? corner : corner + (pc.kind == TV_PVS_KIND_UMBRA ? 2u : 0u);
