@@ -20,12 +20,14 @@ static void print_tr_stats(const pvs_stats* s)
            s->silhouettes);
     printf("active pixels     %llu (summed over layers), mean trim sequence %.2f, %llu sorted by a workgroup\n",
            (unsigned long long)s->active_pixels, s->mean_sequence, (unsigned long long)s->coop_pixels);
-    printf("k-buffers         %.1f MiB allocated (%u tile%s), %.1f MiB used (largest layer)\n",
-           s->kbuffer_bytes / 1048576.0, s->tiles, s->tiles == 1 ? "" : "s", s->kbuffer_bytes_used / 1048576.0);
+    printf("k-buffers         %.1f MiB allocated (%u tile%s), %.1f MiB used (fullest layer), pool grown %u time%s, "
+           "%llu entries lost\n",
+           s->kbuffer_bytes / 1048576.0, s->tiles, s->tiles == 1 ? "" : "s", s->kbuffer_bytes_used / 1048576.0,
+           s->kbuffer_regrows, s->kbuffer_regrows == 1 ? "" : "s", (unsigned long long)s->kbuffer_lost);
     printf("overflow          %llu pixels, %llu front fragments (handled conservatively)\n",
            (unsigned long long)s->overflow_pixels, (unsigned long long)s->overflow_fronts);
     printf("per layer         tris: in the layer / fronts + backs drawn, regions: trim regions, active: pixels\n"
-           "                  resolved, seq: mean trim sequence, ovf: overflowing pixels, KiB: k-buffer entries read\n");
+           "                  resolved, seq: mean trim sequence, ovf: overflowing pixels, KiB: k-buffer pages taken\n");
     printf("%5s %8s %8s %8s %8s %8s %6s %6s %8s %9s %9s %9s\n", "layer", "tris", "fronts", "backs", "regions",
            "active", "seq", "ovf", "KiB", "P1 ms", "P2 ms", "P3 ms");
     for (uint32_t l = 0; s->per_layer && l < s->layers; l++) {
@@ -42,7 +44,7 @@ int tv_cmd_pvs(int argc, char** argv)
     const char *scene = NULL, *method = "tr", *ids_out = NULL;
     float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
-    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS;
+    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS, pages = 0;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
@@ -56,7 +58,9 @@ int tv_cmd_pvs(int argc, char** argv)
         {"coop-min", TV_ARG_INT, &coop_min, "N",
          "tr: sort trim sequences of >= N entries with a workgroup per pixel (default 8; 1000: never)"},
         {"tile-pixels", TV_ARG_INT, &tile_pixels, "N",
-         "tr: compute the image in tiles of at most N pixels (default 262144 = 512x512)"},
+         "tr: compute the image in tiles of at most N pixels (default 1048576 = 1024x1024)"},
+        {"kbuffer-pages", TV_ARG_INT, &pages, "N",
+         "tr: first size of the k-buffer page pool (default: a 16th of tile pixels x k x 4 lists / 4)"},
         TV_ARG_METHOD(&method),
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
     };
@@ -67,11 +71,13 @@ int tv_cmd_pvs(int argc, char** argv)
     /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
     pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k,
                                  .coop_sort_min = (uint32_t)coop_min, .max_tile_pixels = (uint32_t)tile_pixels,
+                                 .kbuffer_pages = (uint32_t)pages,
                                  .max_layers = tv_arg_max_layers(max_layers)},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
     if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
         !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0") ||
+        !tv_arg_require("kbuffer-pages", pages, pages >= 0, ">= 0") ||
         !tv_arg_require("max-layers", max_layers, max_layers >= -1, ">= -1"))
         return 2;
     if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc)) {

@@ -14,10 +14,14 @@
 
 #define PVS_DEFAULT_WIDTH 512u
 #define PVS_DEFAULT_HEIGHT 512u
-#define PVS_DEFAULT_K 16u
-/* The default resolution in one tile: larger images are tiled, and the
- * per-pixel memory stays what 512 x 512 needs (k-buffers 128 MiB at k = 16). */
-#define PVS_DEFAULT_TILE_PIXELS (512u * 512u)
+#define PVS_DEFAULT_K 32u
+/* Larger images are tiled; the largest per-pixel buffer, the carry, then
+ * takes at most 256 MiB (lavapipe's maxStorageBufferRange allows half). */
+#define PVS_DEFAULT_TILE_PIXELS (1024u * 1024u)
+/* The k-buffer pool starts at this fraction of pixels x k x 4 lists (the
+ * lists are mostly short or empty: docs/pvs-gpu-passes.md, "Buffers") and
+ * grows when a computation runs out (pvs_reserve_pool). */
+#define PVS_DEFAULT_POOL_DIVISOR 16u
 #define PVS_DEFAULT_MAX_PROXIES 1024u
 /* The paper's N. On a CPU device (lavapipe) the cooperative pass only
  * costs: a workgroup resolves one pixel where a SIMD batch of the per-thread
@@ -31,16 +35,15 @@ static const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | V
 static bool host_visible(uint32_t binding)
 {
     return binding == TV_PVS_BIND_VIEW || binding == TV_PVS_BIND_LAYER_TRIS || binding == TV_PVS_BIND_COUNTERS ||
-           binding == TV_PVS_BIND_TRI_FLAGS || binding == TV_PVS_BIND_LAYER_STATS || binding == TV_PVS_BIND_PROXIES;
+           binding == TV_PVS_BIND_TRI_FLAGS || binding == TV_PVS_BIND_LAYER_STATS || binding == TV_PVS_BIND_PROXIES ||
+           binding == TV_PVS_BIND_KALLOC;
 }
 
 static bool create_buffer(pvs_context* ctx, uint32_t binding, VkDeviceSize size, char* err, size_t err_size)
 {
     if (size > ctx->rnd->props.limits.maxStorageBufferRange) {
-        bool kbuffer = binding >= TV_PVS_BIND_KFRONT && binding <= TV_PVS_BIND_KUMBRA;
-        snprintf(err, err_size, "pvs: buffer %u needs %llu bytes, over maxStorageBufferRange %u (lower the PVS resolution%s)",
-                 binding, (unsigned long long)size, ctx->rnd->props.limits.maxStorageBufferRange,
-                 kbuffer ? " or k" : "");
+        snprintf(err, err_size, "pvs: buffer %u needs %llu bytes, over maxStorageBufferRange %u (lower the PVS resolution)",
+                 binding, (unsigned long long)size, ctx->rnd->props.limits.maxStorageBufferRange);
         return false;
     }
     VkBufferUsageFlags usage = storage;
@@ -104,11 +107,49 @@ bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* er
     return true;
 }
 
+bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_size)
+{
+    pages = pages < ctx->max_pool_pages ? pages : ctx->max_pool_pages;
+    if (pages <= ctx->pool_pages)
+        return true;
+    if (!create_buffer(ctx, TV_PVS_BIND_KPOOL, (VkDeviceSize)pages * TV_PVS_PAGE * 8, err, err_size) ||
+        !create_buffer(ctx, TV_PVS_BIND_KLINKS, (VkDeviceSize)pages * 4, err, err_size))
+        return false;
+    ctx->pool_pages = pages;
+    pvs_write_descriptors(ctx);
+    return true;
+}
+
+bool pvs_pool_regrow(pvs_context* ctx, bool* again, char* err, size_t err_size)
+{
+    const uint32_t* ls = ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped;
+    uint32_t need = 0, have = ctx->pool_pages;
+    for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+        uint32_t asked = ls[4 * TV_PVS_LAYER_STATS_STRIDE * l]; /* pvs_follow's most pages in one tile */
+        need = asked > need ? asked : need;
+    }
+    pvs_view_gpu* view = ctx->buffers[TV_PVS_BIND_VIEW].mapped;
+    *again = need > have && (have < ctx->max_pool_pages || !view->kb_holes);
+    if (!*again)
+        return true;
+    if (have >= ctx->max_pool_pages) { /* at the largest pool: once more, with the lost slots marked */
+        view->kb_holes = 1;
+        tv_log(TV_LOG_INFO, "pvs: the k-buffer pool of %u pages, the most allowed, ran out (%u asked for): "
+               "entries are lost as overflow", have, need);
+        return true;
+    }
+    uint32_t twice = have > UINT32_MAX / 2 ? UINT32_MAX : 2 * have;
+    if (!pvs_reserve_pool(ctx, need > twice ? need : twice, err, err_size))
+        return false;
+    tv_log(TV_LOG_INFO, "pvs: the k-buffer pool of %u pages ran out (%u asked for): %u pages, computing again", have,
+           need, ctx->pool_pages);
+    return true;
+}
+
 /* Buffers sized by the scene or the tile, created once. */
 static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
 {
     const VkDeviceSize pixels = (VkDeviceSize)ctx->grid.tile_width * ctx->grid.tile_height;
-    const VkDeviceSize slots = pixels * ctx->k;
     const VkDeviceSize tris = ctx->triangle_count ? ctx->triangle_count : 1;
     const VkDeviceSize drawn = tris + 12 * (VkDeviceSize)ctx->max_proxies; /* proxy faces follow the scene's */
     struct {
@@ -119,10 +160,10 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_ADJ, tris * 12},
         {TV_PVS_BIND_LAYER_TRIS, drawn * 4},
         {TV_PVS_BIND_COUNTERS, TV_PVS_C_COUNT * 4},
-        {TV_PVS_BIND_KFRONT, slots * 8},
-        {TV_PVS_BIND_KBACK, slots * 8},
-        {TV_PVS_BIND_KTRIM, slots * 8},
-        {TV_PVS_BIND_KUMBRA, slots * 8},
+        {TV_PVS_BIND_KPOOL, (VkDeviceSize)ctx->pool_pages * TV_PVS_PAGE * 8},
+        {TV_PVS_BIND_KHEADS, pixels * TV_PVS_LISTS * 4},
+        {TV_PVS_BIND_KLINKS, (VkDeviceSize)ctx->pool_pages * 4},
+        {TV_PVS_BIND_KALLOC, TV_PVS_A_COUNT * 4},
         {TV_PVS_BIND_PIXCOUNT, pixels * 16},
         {TV_PVS_BIND_PIXSTATE, pixels * 16},
         {TV_PVS_BIND_CARRY, pixels * TV_K_CARRY * 16},
@@ -258,14 +299,18 @@ static uint32_t coop_width(const rnd_context* rnd)
 
 /* The tile grid: at most `max_tile_pixels` pixels (0: the default) per tile
  * and no per-pixel buffer over maxStorageBufferRange (the largest per pixel
- * is the carry, or the k-buffers at k = TV_K_FRONT). */
+ * is the carry). */
 static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
 {
-    uint64_t per_pixel = (uint64_t)TV_K_CARRY * 16;
-    per_pixel = 8ull * ctx->k > per_pixel ? 8ull * ctx->k : per_pixel;
-    uint64_t fit = ctx->rnd->props.limits.maxStorageBufferRange / per_pixel;
+    uint64_t fit = ctx->rnd->props.limits.maxStorageBufferRange / ((uint64_t)TV_K_CARRY * 16);
     uint64_t budget = max_tile_pixels ? max_tile_pixels : PVS_DEFAULT_TILE_PIXELS;
     return pvs_tile_grid_make(ctx->width, ctx->height, budget < fit ? budget : fit);
+}
+
+uint64_t pvs_kbuffer_bytes(const pvs_context* ctx)
+{
+    return ctx->buffers[TV_PVS_BIND_KPOOL].size + ctx->buffers[TV_PVS_BIND_KLINKS].size +
+           ctx->buffers[TV_PVS_BIND_KHEADS].size;
 }
 
 static bool check_desc(const pvs_desc* d, char* err, size_t err_size)
@@ -316,7 +361,14 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     ctx->height = d.height ? d.height : PVS_DEFAULT_HEIGHT;
     ctx->k = d.k ? d.k : PVS_DEFAULT_K;
     ctx->grid = tile_grid(ctx, d.max_tile_pixels);
-    bool cpu = rnd->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    /* the pool: its slots must fit one storage buffer */
+    uint64_t cap = ctx->rnd->props.limits.maxStorageBufferRange / (TV_PVS_PAGE * 8);
+    cap = d.max_kbuffer_pages && d.max_kbuffer_pages < cap ? d.max_kbuffer_pages : cap;
+    uint64_t start = d.kbuffer_pages ? d.kbuffer_pages
+                                     : (uint64_t)ctx->grid.tile_width * ctx->grid.tile_height * ctx->k * TV_PVS_LISTS /
+                                           (TV_PVS_PAGE * PVS_DEFAULT_POOL_DIVISOR);
+    ctx->max_pool_pages = (uint32_t)cap;
+    ctx->pool_pages = (uint32_t)(start < cap ? start : cap);    bool cpu = rnd->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     ctx->explain = d.explain;
     ctx->coop_sort_min = d.coop_sort_min ? d.coop_sort_min : cpu ? PVS_NEVER_COOP : PVS_DEFAULT_COOP_SORT_MIN;
     ctx->coop_width = coop_width(rnd);
@@ -344,12 +396,10 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
         pvs_destroy(ctx);
         return NULL;
     }
-    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, k-buffers %.1f MiB",
+    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, k-buffer pool %u pages (%.1f MiB)",
            scene->name, ctx->octree.leaf_count, ctx->width, ctx->height, pvs_tile_count(&ctx->grid),
-           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k,
-           (double)(ctx->buffers[TV_PVS_BIND_KFRONT].size + ctx->buffers[TV_PVS_BIND_KBACK].size +
-                    ctx->buffers[TV_PVS_BIND_KTRIM].size + ctx->buffers[TV_PVS_BIND_KUMBRA].size) /
-               (1024.0 * 1024.0));
+           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k, ctx->pool_pages,
+           (double)pvs_kbuffer_bytes(ctx) / (1024.0 * 1024.0));
     return ctx;
 }
 
