@@ -160,6 +160,7 @@ static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
 {
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_PIXCOUNT].buffer, 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KHEADS].buffer, 0, VK_WHOLE_SIZE, TV_PVS_NO_PAGE);
+    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KLINKS].buffer, 0, VK_WHOLE_SIZE, TV_PVS_NO_PAGE);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KALLOC].buffer, TV_PVS_A_TAKEN * 4, 4, 0);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_LOST].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_SPILL].buffer, 0, sizeof(uint32_t), 0); /* the list's length */
@@ -279,6 +280,15 @@ static void copy_draw_counts(pvs_context* ctx, VkCommandBuffer cmd, uint32_t l)
                     regions);
 }
 
+/* The pages P2 took in layer `l` of tile `t` (pvs_pages_asked). */
+static void copy_pages_taken(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, uint32_t l)
+{
+    uint32_t tile = t->y / ctx->grid.tile_height * ctx->grid.cols + t->x / ctx->grid.tile_width;
+    VkBuffer b = ctx->buffers[TV_PVS_BIND_KALLOC].buffer;
+    vkCmdCopyBuffer(cmd, b, b, 1,
+                    &(VkBufferCopy){TV_PVS_A_TAKEN * 4, (TV_PVS_A_LAYERS + tile * ctx->layer_capacity + l) * 4, 4});
+}
+
 /* Timestamps: one before everything, then per tile one after each of P1,
  * P2, P3 of every layer and one after P4. */
 static uint32_t timestamp_count(const pvs_context* ctx)
@@ -333,6 +343,7 @@ static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
         barrier(cmd); /* the dilated pass reads the exact pass's centre depths */
         render_pass(ctx, cmd, t, 1, PASS_LAYER);
         barrier(cmd);
+        copy_pages_taken(ctx, cmd, t, l);
         timestamp(ctx, cmd, ts);
         pvs_record_resolve(ctx, cmd);
         render_pass(ctx, cmd, t, 0, PASS_SPILL); /* both empty unless P3 asked for them */
@@ -474,7 +485,11 @@ static void collect_stats(pvs_context* ctx, pvs_stats* st)
         pl->fronts = s[4] / 3;
         pl->backs = s[5] / 3;
         pl->silhouettes = s[6] / 6;
-        pl->kbuffer_bytes_used = (uint64_t)(s[0] < ctx->pool_pages ? s[0] : ctx->pool_pages) * PVS_PAGE_BYTES;
+        uint32_t asked = pvs_pages_asked(ctx, l);
+        pl->kbuffer_bytes_used = (uint64_t)(asked < ctx->pool_pages ? asked : ctx->pool_pages) * PVS_PAGE_BYTES;
+        st->kbuffer_lost = asked > ctx->pool_pages && asked - ctx->pool_pages > st->kbuffer_lost
+                               ? asked - ctx->pool_pages
+                               : st->kbuffer_lost;
         pl->active_pixels = s[1];
         pl->sequence_entries = s[2];
         pl->overflow_pixels = s[3];
@@ -487,7 +502,6 @@ static void collect_stats(pvs_context* ctx, pvs_stats* st)
     st->mean_sequence = st->active_pixels ? (double)seq / (double)st->active_pixels : 0.0;
     st->kbuffer_bytes = pvs_kbuffer_bytes(ctx);
     st->kbuffer_bytes_used += ctx->buffers[TV_PVS_BIND_KHEADS].size;
-    st->kbuffer_lost = ((const uint32_t*)ctx->buffers[TV_PVS_BIND_KALLOC].mapped)[TV_PVS_A_LOST];
 }
 
 static bool check_proxies(const pvs_context* ctx, const pvs_proxy* proxies, uint32_t count, char* err,

@@ -49,6 +49,8 @@ static bool create_buffer(pvs_context* ctx, uint32_t binding, VkDeviceSize size,
     VkBufferUsageFlags usage = storage;
     if (binding == TV_PVS_BIND_COUNTERS) /* indirect commands; the draw counts are copied into the layer stats */
         usage |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    if (binding == TV_PVS_BIND_KALLOC) /* each layer's page count is copied within it */
+        usage |= VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     rnd_buffer_destroy(ctx->rnd, &ctx->buffers[binding]);
     return rnd_buffer_create(ctx->rnd, size, usage, host_visible(binding), &ctx->buffers[binding], err, err_size);
 }
@@ -93,7 +95,9 @@ bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* er
     if (grow_layers) {
         uint32_t n = layers + layers / 2;
         if (!create_buffer(ctx, TV_PVS_BIND_LAYER_STATS, (VkDeviceSize)n * 16 * TV_PVS_LAYER_STATS_STRIDE, err,
-                           err_size))
+                           err_size) ||
+            !create_buffer(ctx, TV_PVS_BIND_KALLOC, (TV_PVS_A_LAYERS + (VkDeviceSize)pvs_tile_count(&ctx->grid) * n) * 4,
+                           err, err_size))
             return false;
         pvs_layer_stats* per_layer = realloc(ctx->per_layer, sizeof *per_layer * n);
         if (!per_layer) {
@@ -122,10 +126,9 @@ bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_si
 
 bool pvs_pool_regrow(pvs_context* ctx, bool* again, char* err, size_t err_size)
 {
-    const uint32_t* ls = ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped;
     uint32_t need = 0, have = ctx->pool_pages;
     for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
-        uint32_t asked = ls[4 * TV_PVS_LAYER_STATS_STRIDE * l]; /* pvs_follow's most pages in one tile */
+        uint32_t asked = pvs_pages_asked(ctx, l);
         need = asked > need ? asked : need;
     }
     pvs_view_gpu* view = ctx->buffers[TV_PVS_BIND_VIEW].mapped;
@@ -163,7 +166,6 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_KPOOL, (VkDeviceSize)ctx->pool_pages * TV_PVS_PAGE * 8},
         {TV_PVS_BIND_KHEADS, pixels * TV_PVS_LISTS * 4},
         {TV_PVS_BIND_KLINKS, (VkDeviceSize)ctx->pool_pages * 4},
-        {TV_PVS_BIND_KALLOC, TV_PVS_A_COUNT * 4},
         {TV_PVS_BIND_PIXCOUNT, pixels * 16},
         {TV_PVS_BIND_PIXSTATE, pixels * 16},
         {TV_PVS_BIND_CARRY, pixels * TV_K_CARRY * 16},
@@ -305,6 +307,17 @@ static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
     uint64_t fit = ctx->rnd->props.limits.maxStorageBufferRange / ((uint64_t)TV_K_CARRY * 16);
     uint64_t budget = max_tile_pixels ? max_tile_pixels : PVS_DEFAULT_TILE_PIXELS;
     return pvs_tile_grid_make(ctx->width, ctx->height, budget < fit ? budget : fit);
+}
+
+uint32_t pvs_pages_asked(const pvs_context* ctx, uint32_t layer)
+{
+    const uint32_t* taken = (const uint32_t*)ctx->buffers[TV_PVS_BIND_KALLOC].mapped + TV_PVS_A_LAYERS;
+    uint32_t most = 0;
+    for (uint32_t t = 0; t < pvs_tile_count(&ctx->grid); t++) {
+        uint32_t n = taken[t * ctx->layer_capacity + layer];
+        most = n > most ? n : most;
+    }
+    return most;
 }
 
 uint64_t pvs_kbuffer_bytes(const pvs_context* ctx)

@@ -120,6 +120,9 @@ bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_si
  * pvs_view_gpu.kb_holes set, so that P3 can tell the slots they left empty
  * (pvs_kbuffer.glsl). */
 bool pvs_pool_regrow(pvs_context* ctx, bool* again, char* err, size_t err_size);
+/* After a computation: the most pages P2 asked for in `layer` of one tile
+ * (past pool_pages where the pool ran out). */
+uint32_t pvs_pages_asked(const pvs_context* ctx, uint32_t layer);
 /* Bytes of the pool, its links and the list heads. */
 uint64_t pvs_kbuffer_bytes(const pvs_context* ctx);
 

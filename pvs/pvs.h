@@ -96,7 +96,8 @@ typedef struct pvs_stats {
     uint64_t kbuffer_bytes;       /* k-buffers allocated: the page pool with its links, and the list
                                      heads of one tile */
     uint64_t kbuffer_bytes_used;  /* the pages P2 took in the fullest layer of one tile, and the heads */
-    uint64_t kbuffer_lost;        /* entries the pool had no page for at its largest (overflow) */
+    uint64_t kbuffer_lost;        /* pages P2 asked for past the pool at its largest, in one layer of
+                                     one tile: their entries were lost, as overflow (0: none) */
     uint32_t kbuffer_regrows;     /* times this computation ran out of pages, grew the pool and
                                      started again */
     uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */

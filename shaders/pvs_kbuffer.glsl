@@ -39,33 +39,33 @@ void pvs_mark_active(uint p)
 // The page a link leads to (head: pixel p's head of a list at `at`, else the
 // page whose next link it is), taking a fresh page from the pool where the
 // link is missing: the first fragment to install its page with a
-// compare-and-swap wins, a loser's page stays unused (counted) and nobody
-// waits. The pages asked for go to the layer's statistics, whence
-// pvs_compute sees that the pool was too small (it then grows the pool and
-// computes again). TV_PVS_NO_PAGE when the pool is exhausted. Only a
-// computation that runs out holes in its lists: in every other one each
-// slot below min(count, k) is written, so fresh pages are cleared only when
-// pvs_compute computes again with a pool that cannot grow (view.kb_holes).
+// compare-and-swap wins, a loser's page stays unused, nobody waits.
+// TV_PVS_NO_PAGE when the pool is exhausted. The allocator counts on past
+// the pool's end, so pvs_compute sees from the count (copied after each
+// layer's P2) that the pool was too small; it then grows the pool and
+// computes again. Heads and links are cleared before each layer, so a fresh
+// page needs no store before it is published: llvmpipe runs this branch
+// under a mask for every fragment, so it is kept to two atomics. Only a
+// computation that runs out leaves holes in its lists (in every other, each
+// slot below min(count, k) is written), so fresh pages are cleared only
+// when pvs_compute computes again with a pool that cannot grow
+// (view.kb_holes).
 uint pvs_follow(bool head, uint at)
 {
     uint link = head ? kheads[at] : klinks[at];
     if (link != TV_PVS_NO_PAGE)
         return link;
     uint fresh = atomicAdd(kalloc[TV_PVS_A_TAKEN], 1u);
-    atomicMax(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, fresh + 1u);
     if (fresh >= uint(klinks.length()))
         return TV_PVS_NO_PAGE;
-    klinks[fresh] = TV_PVS_NO_PAGE;
-    if (view.kb_holes != 0u) // a computation that loses entries: the slots that stay empty must read as holes
+    if (view.kb_holes != 0u) { // a computation that loses entries: the slots that stay empty must read as holes
         for (uint i = 0u; i < TV_PVS_PAGE; i++)
             kpool[TV_PVS_PAGE * fresh + i] = uvec2(TV_PVS_HOLE, 0u);
-    memoryBarrierBuffer();
+        memoryBarrierBuffer(); // before another fragment can store into the page
+    }
     uint won = head ? atomicCompSwap(kheads[at], TV_PVS_NO_PAGE, fresh + 1u)
                     : atomicCompSwap(klinks[at], TV_PVS_NO_PAGE, fresh + 1u);
-    if (won == TV_PVS_NO_PAGE)
-        return fresh + 1u;
-    atomicAdd(kalloc[TV_PVS_A_WASTED], 1u);
-    return won;
+    return won == TV_PVS_NO_PAGE ? fresh + 1u : won;
 }
 
 // Stores entry e in slot `slot` (< k) of list `list` at pixel p, through the
@@ -79,7 +79,6 @@ bool pvs_store(uint p, uint list, uint slot, uvec2 e)
         page = pvs_follow(false, page - 1u);
     if (page == TV_PVS_NO_PAGE) {
         atomicOr(pixcount[p][list], TV_PVS_COUNT_LOST);
-        atomicAdd(kalloc[TV_PVS_A_LOST], 1u);
         return false;
     }
     kpool[TV_PVS_PAGE * (page - 1u) + slot % TV_PVS_PAGE] = e;

@@ -191,12 +191,10 @@
 #define TV_PVS_BIND_COUNTERS   6  // indirect commands and counters (TV_PVS_C_*)
 #define TV_PVS_BIND_KPOOL      7  // k-buffer pages: TV_PVS_PAGE uvec2 (depth bits, triangle or region id) each
 #define TV_PVS_BIND_KHEADS     8  // uint x TV_PVS_LISTS per pixel: first page + 1 of each list (0: empty), reset every layer
-#define TV_PVS_BIND_KLINKS     9  // uint per page: the next page + 1 of its list
-#define TV_PVS_BIND_KALLOC     10 // uint x TV_PVS_A_COUNT: the pool's allocator (TV_PVS_A_*)
-#define TV_PVS_A_TAKEN  0u // pages taken in this layer: the next free page (reset every layer)
-#define TV_PVS_A_WASTED 1u // pages taken by a link that another fragment installed first (per computation)
-#define TV_PVS_A_LOST   2u // entries the pool had no page for (per computation)
-#define TV_PVS_A_COUNT  4u
+#define TV_PVS_BIND_KLINKS     9  // uint per page: the next page + 1 of its list (0: none), reset every layer
+#define TV_PVS_BIND_KALLOC     10 // uint: pages taken in this layer (the pool's next free page, reset every layer), then per tile and layer a copy of it after P2
+#define TV_PVS_A_TAKEN  0u
+#define TV_PVS_A_LAYERS 1u // slot of tile 0's layer 0 in TV_PVS_BIND_KALLOC
 #define TV_PVS_BIND_PIXCOUNT   11 // uvec4 per pixel: front, back, trim, umbra counters
 #define TV_PVS_BIND_PIXSTATE   12 // uvec4 per pixel: stencil, carry count (sealed: terminator depth bits), hide begin/end bits
 #define TV_PVS_BIND_CARRY      13 // uvec4 (depth bits, kind, id, 0) x TV_K_CARRY per pixel
@@ -204,7 +202,7 @@
 #define TV_PVS_BIND_ACTIVE_LIST 15 // pixel indices activated in this layer
 #define TV_PVS_BIND_TRI_FLAGS  16 // uint per triangle: 1 = in the PVS
 #define TV_PVS_BIND_VIS_IDS    17 // r32ui storage image: the visibility buffer's ids
-#define TV_PVS_BIND_LAYER_STATS 18 // TV_PVS_LAYER_STATS_STRIDE uvec4 per layer: (most pages P2 asked for in one tile, then P3's active pixels, sequence sum, overflows), P1's (vertex counts of the FF, BF and trim draws, 0)
+#define TV_PVS_BIND_LAYER_STATS 18 // TV_PVS_LAYER_STATS_STRIDE uvec4 per layer: (0, then P3's active pixels, sequence sum, overflows), P1's (vertex counts of the FF, BF and trim draws, 0)
 #define TV_PVS_LAYER_STATS_STRIDE 2
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
 #define TV_PVS_BIND_CENTRE_DEPTH 20 // TV_PVS_CENTRE_STRIDE uints per pixel: nearest depth bits of the faces covering its centre
