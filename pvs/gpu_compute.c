@@ -16,8 +16,6 @@
 /* Raster far plane relative to the PVS far plane: the umbra quads' far
  * corners lie exactly on the latter and must not be clipped. */
 #define PVS_RASTER_FAR_SCALE 1.01f
-/* A k-buffer page: its slots and its link. */
-#define PVS_PAGE_BYTES (TV_PVS_PAGE * 8 + 4)
 
 float pvs_max_apex_offset(float near_m)
 {
@@ -280,15 +278,6 @@ static void copy_draw_counts(pvs_context* ctx, VkCommandBuffer cmd, uint32_t l)
                     regions);
 }
 
-/* The pages P2 took in layer `l` of tile `t` (pvs_pages_asked). */
-static void copy_pages_taken(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, uint32_t l)
-{
-    uint32_t tile = t->y / ctx->grid.tile_height * ctx->grid.cols + t->x / ctx->grid.tile_width;
-    VkBuffer b = ctx->buffers[TV_PVS_BIND_KALLOC].buffer;
-    vkCmdCopyBuffer(cmd, b, b, 1,
-                    &(VkBufferCopy){TV_PVS_A_TAKEN * 4, (TV_PVS_A_LAYERS + tile * ctx->layer_capacity + l) * 4, 4});
-}
-
 /* Timestamps: one before everything, then per tile one after each of P1,
  * P2, P3 of every layer and one after P4. */
 static uint32_t timestamp_count(const pvs_context* ctx)
@@ -343,7 +332,7 @@ static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
         barrier(cmd); /* the dilated pass reads the exact pass's centre depths */
         render_pass(ctx, cmd, t, 1, PASS_LAYER);
         barrier(cmd);
-        copy_pages_taken(ctx, cmd, t, l);
+        pvs_record_pages_taken(ctx, cmd, t, l);
         timestamp(ctx, cmd, ts);
         pvs_record_resolve(ctx, cmd);
         render_pass(ctx, cmd, t, 0, PASS_SPILL); /* both empty unless P3 asked for them */
@@ -485,23 +474,15 @@ static void collect_stats(pvs_context* ctx, pvs_stats* st)
         pl->fronts = s[4] / 3;
         pl->backs = s[5] / 3;
         pl->silhouettes = s[6] / 6;
-        uint32_t asked = pvs_pages_asked(ctx, l);
-        pl->kbuffer_bytes_used = (uint64_t)(asked < ctx->pool_pages ? asked : ctx->pool_pages) * PVS_PAGE_BYTES;
-        st->kbuffer_lost = asked > ctx->pool_pages && asked - ctx->pool_pages > st->kbuffer_lost
-                               ? asked - ctx->pool_pages
-                               : st->kbuffer_lost;
         pl->active_pixels = s[1];
         pl->sequence_entries = s[2];
         pl->overflow_pixels = s[3];
-        if (pl->kbuffer_bytes_used > st->kbuffer_bytes_used)
-            st->kbuffer_bytes_used = pl->kbuffer_bytes_used;
         st->active_pixels += s[1];
         seq += s[2];
         st->overflow_pixels += s[3];
     }
     st->mean_sequence = st->active_pixels ? (double)seq / (double)st->active_pixels : 0.0;
-    st->kbuffer_bytes = pvs_kbuffer_bytes(ctx);
-    st->kbuffer_bytes_used += ctx->buffers[TV_PVS_BIND_KHEADS].size;
+    pvs_kbuffer_stats(ctx, st);
 }
 
 static bool check_proxies(const pvs_context* ctx, const pvs_proxy* proxies, uint32_t count, char* err,

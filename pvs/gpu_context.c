@@ -111,6 +111,48 @@ bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* er
     return true;
 }
 
+void pvs_record_pages_taken(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, uint32_t layer)
+{
+    uint32_t tile = t->y / ctx->grid.tile_height * ctx->grid.cols + t->x / ctx->grid.tile_width;
+    VkBuffer b = ctx->buffers[TV_PVS_BIND_KALLOC].buffer;
+    vkCmdCopyBuffer(cmd, b, b, 1,
+                    &(VkBufferCopy){TV_PVS_A_TAKEN * 4, (TV_PVS_A_LAYERS + tile * ctx->layer_capacity + layer) * 4, 4});
+}
+
+/* The most pages P2 asked for in `layer` of one tile (past pool_pages where
+ * the pool ran out). */
+static uint32_t pages_asked(const pvs_context* ctx, uint32_t layer)
+{
+    const uint32_t* taken = (const uint32_t*)ctx->buffers[TV_PVS_BIND_KALLOC].mapped + TV_PVS_A_LAYERS;
+    uint32_t most = 0;
+    for (uint32_t t = 0; t < pvs_tile_count(&ctx->grid); t++) {
+        uint32_t n = taken[t * ctx->layer_capacity + layer];
+        most = n > most ? n : most;
+    }
+    return most;
+}
+
+static uint64_t kbuffer_bytes(const pvs_context* ctx)
+{
+    return ctx->buffers[TV_PVS_BIND_KPOOL].size + ctx->buffers[TV_PVS_BIND_KLINKS].size +
+           ctx->buffers[TV_PVS_BIND_KHEADS].size;
+}
+
+void pvs_kbuffer_stats(const pvs_context* ctx, pvs_stats* st)
+{
+    const uint64_t page_bytes = TV_PVS_PAGE * 8 + 4; /* slots and link */
+    for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+        uint32_t asked = pages_asked(ctx, l), have = ctx->pool_pages;
+        ctx->per_layer[l].kbuffer_bytes_used = (asked < have ? asked : have) * page_bytes;
+        if (ctx->per_layer[l].kbuffer_bytes_used > st->kbuffer_bytes_used)
+            st->kbuffer_bytes_used = ctx->per_layer[l].kbuffer_bytes_used;
+        if (asked > have && asked - have > st->kbuffer_lost)
+            st->kbuffer_lost = asked - have;
+    }
+    st->kbuffer_bytes_used += ctx->buffers[TV_PVS_BIND_KHEADS].size;
+    st->kbuffer_bytes = kbuffer_bytes(ctx);
+}
+
 bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_size)
 {
     pages = pages < ctx->max_pool_pages ? pages : ctx->max_pool_pages;
@@ -128,7 +170,7 @@ bool pvs_pool_regrow(pvs_context* ctx, bool* again, char* err, size_t err_size)
 {
     uint32_t need = 0, have = ctx->pool_pages;
     for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
-        uint32_t asked = pvs_pages_asked(ctx, l);
+        uint32_t asked = pages_asked(ctx, l);
         need = asked > need ? asked : need;
     }
     pvs_view_gpu* view = ctx->buffers[TV_PVS_BIND_VIEW].mapped;
@@ -309,23 +351,6 @@ static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
     return pvs_tile_grid_make(ctx->width, ctx->height, budget < fit ? budget : fit);
 }
 
-uint32_t pvs_pages_asked(const pvs_context* ctx, uint32_t layer)
-{
-    const uint32_t* taken = (const uint32_t*)ctx->buffers[TV_PVS_BIND_KALLOC].mapped + TV_PVS_A_LAYERS;
-    uint32_t most = 0;
-    for (uint32_t t = 0; t < pvs_tile_count(&ctx->grid); t++) {
-        uint32_t n = taken[t * ctx->layer_capacity + layer];
-        most = n > most ? n : most;
-    }
-    return most;
-}
-
-uint64_t pvs_kbuffer_bytes(const pvs_context* ctx)
-{
-    return ctx->buffers[TV_PVS_BIND_KPOOL].size + ctx->buffers[TV_PVS_BIND_KLINKS].size +
-           ctx->buffers[TV_PVS_BIND_KHEADS].size;
-}
-
 static bool check_desc(const pvs_desc* d, char* err, size_t err_size)
 {
     if (d->k > TV_K_FRONT || d->k > TV_K_BACK || d->k > TV_K_TRIM || d->k > TV_K_UMBRA) {
@@ -412,7 +437,7 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, k-buffer pool %u pages (%.1f MiB)",
            scene->name, ctx->octree.leaf_count, ctx->width, ctx->height, pvs_tile_count(&ctx->grid),
            ctx->grid.tile_width, ctx->grid.tile_height, ctx->k, ctx->pool_pages,
-           (double)pvs_kbuffer_bytes(ctx) / (1024.0 * 1024.0));
+           (double)kbuffer_bytes(ctx) / (1024.0 * 1024.0));
     return ctx;
 }
 

@@ -120,10 +120,12 @@ bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_si
  * pvs_view_gpu.kb_holes set, so that P3 can tell the slots they left empty
  * (pvs_kbuffer.glsl). */
 bool pvs_pool_regrow(pvs_context* ctx, bool* again, char* err, size_t err_size);
-/* After a computation: the most pages P2 asked for in `layer` of one tile
- * (past pool_pages where the pool ran out). */
-uint32_t pvs_pages_asked(const pvs_context* ctx, uint32_t layer);
-/* Bytes of the pool, its links and the list heads. */
-uint64_t pvs_kbuffer_bytes(const pvs_context* ctx);
+/* Records the copy of the pages P2 took in `layer` of tile `t` (after its
+ * P2, before the next layer's reset). */
+void pvs_record_pages_taken(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, uint32_t layer);
+/* After a computation: the k-buffer figures of `st` and its per-layer
+ * statistics (allocated: pool, links and heads; used: the pages of the
+ * fullest layer of one tile and the heads; pages lacking at the cap). */
+void pvs_kbuffer_stats(const pvs_context* ctx, pvs_stats* st);
 
 #endif
