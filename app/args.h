@@ -36,14 +36,14 @@ typedef enum tv_args_result {
 /* Option rows several commands share, so that their names, value names and
  * help read the same everywhere. */
 #define TV_ARG_METHOD(out) {"method", TV_ARG_STRING, (out), "M", "PVS method: tr, gt, sas, frompoint or q3vis (default tr)"}
-#define TV_ARG_K(out) {"k", TV_ARG_INT, (out), "N", "tr: k-buffer slots per pixel and kind, >= 1 (default 32)"}
+#define TV_ARG_K(out) {"k", TV_ARG_INT, (out), "N", "tr: k-buffer slots per pixel and kind, >= 1 (default 16)"}
 #define TV_ARG_PVS_RES(name, out) {(name), TV_ARG_RES, (out), "WxH", "tr: PVS resolution (default 512x512)"}
 #define TV_ARG_FOV_PVS(out) {"fov-pvs", TV_ARG_FLOAT, (out), "DEG", "PVS FOV, square frustum (default 90)"}
 #define TV_ARG_MAX_LAYERS(out) {"max-layers", TV_ARG_INT, (out), "N", "tr: merge octree layers into at most N (default -1: 14 on a GPU, never on a CPU device; 0: never)"}
 #define TV_ARG_SAMPLES(out) {"samples", TV_ARG_INT, (out), "N", "views per viewcell of the sampled ground truth (default 200)"}
 
 /* The defaults those rows state. */
-#define TV_ARGS_DEFAULT_K 32
+#define TV_ARGS_DEFAULT_K 16
 #define TV_ARGS_DEFAULT_SAMPLES 200
 #define TV_ARGS_DEFAULT_MAX_LAYERS (-1)
 

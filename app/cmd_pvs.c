@@ -60,7 +60,7 @@ int tv_cmd_pvs(int argc, char** argv)
         {"tile-pixels", TV_ARG_INT, &tile_pixels, "N",
          "tr: compute the image in tiles of at most N pixels (default 1048576 = 1024x1024)"},
         {"kbuffer-pages", TV_ARG_INT, &pages, "N",
-         "tr: first size of the k-buffer page pool (default: a 16th of tile pixels x k x 4 lists / 4)"},
+         "tr: first size of the k-buffer page pool, in pages of 4 entries (default: 2 per tile pixel)"},
         TV_ARG_METHOD(&method),
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
     };

@@ -14,14 +14,17 @@
 
 #define PVS_DEFAULT_WIDTH 512u
 #define PVS_DEFAULT_HEIGHT 512u
-#define PVS_DEFAULT_K 32u
+/* k = 32 overflows far less (docs/results.md) but exposes false negatives
+ * that overflow hid: quality_interior_walk, _interior_run_fixed and
+ * _sponza_walk lose pixels at k = 32 with the old layout too. */
+#define PVS_DEFAULT_K 16u
 /* Larger images are tiled; the largest per-pixel buffer, the carry, then
  * takes at most 256 MiB (lavapipe's maxStorageBufferRange allows half). */
 #define PVS_DEFAULT_TILE_PIXELS (1024u * 1024u)
-/* The k-buffer pool starts at this fraction of pixels x k x 4 lists (the
- * lists are mostly short or empty: docs/pvs-gpu-passes.md, "Buffers") and
- * grows when a computation runs out (pvs_reserve_pool). */
-#define PVS_DEFAULT_POOL_DIVISOR 16u
+/* The k-buffer pool starts at this many pages per tile pixel, whatever k
+ * (most lists hold 0-2 entries; docs/pvs-gpu-passes.md, "k-buffer pages"),
+ * and grows when a computation runs out (pvs_pool_regrow). */
+#define PVS_DEFAULT_POOL_PAGES_PER_PIXEL 2u
 #define PVS_DEFAULT_MAX_PROXIES 1024u
 /* The paper's N. On a CPU device (lavapipe) the cooperative pass only
  * costs: a workgroup resolves one pixel where a SIMD batch of the per-thread
@@ -403,8 +406,8 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     uint64_t cap = ctx->rnd->props.limits.maxStorageBufferRange / (TV_PVS_PAGE * 8);
     cap = d.max_kbuffer_pages && d.max_kbuffer_pages < cap ? d.max_kbuffer_pages : cap;
     uint64_t start = d.kbuffer_pages ? d.kbuffer_pages
-                                     : (uint64_t)ctx->grid.tile_width * ctx->grid.tile_height * ctx->k * TV_PVS_LISTS /
-                                           (TV_PVS_PAGE * PVS_DEFAULT_POOL_DIVISOR);
+                                     : (uint64_t)ctx->grid.tile_width * ctx->grid.tile_height *
+                                           PVS_DEFAULT_POOL_PAGES_PER_PIXEL;
     ctx->max_pool_pages = (uint32_t)cap;
     ctx->pool_pages = (uint32_t)(start < cap ? start : cap);    bool cpu = rnd->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     ctx->explain = d.explain;

@@ -31,10 +31,10 @@ typedef struct pvs_context pvs_context;
 
 typedef struct pvs_desc {
     uint32_t width, height;          /* PVS resolution; 0: 512 x 512 */
-    uint32_t k;                      /* k-buffer slots per pixel and kind, 1..TV_K_FRONT; 0: 32 */
+    uint32_t k;                      /* k-buffer slots per pixel and kind, 1..TV_K_FRONT; 0: 16 */
     uint32_t kbuffer_pages;          /* k-buffer pool's first size, in pages of TV_PVS_PAGE entries (it
                                         grows when a computation runs out, and the context keeps the
-                                        grown size); 0: a 16th of tile pixels x k x 4 lists */
+                                        grown size); 0: 2 per pixel of a tile */
     uint32_t max_kbuffer_pages;      /* most pages the pool grows to; 0: what maxStorageBufferRange
                                         holds. Past it, entries are lost as overflow (conservative) */
     uint32_t octree_cap;             /* triangles per octree leaf; 0: PVS_OCTREE_DEFAULT_CAP */
