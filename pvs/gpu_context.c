@@ -1,6 +1,7 @@
 /* gpu_context.c - pvs_create / pvs_destroy: welding and adjacency, the
- * octree, the per-pixel GPU buffers (sized once from the resolution and k)
- * and the per-layer buffers (grown on demand by pvs_reserve). */
+ * octree, the per-pixel GPU buffers (sized once from the tile), the
+ * k-buffer page pool (grown on demand by pvs_pool_regrow) and the per-layer
+ * buffers (grown on demand by pvs_reserve). */
 #include "gpu_internal.h"
 
 #include "clock.h"

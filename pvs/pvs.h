@@ -125,8 +125,9 @@ typedef struct pvs_result {
 /* Builds the viewcell-independent state for `scene` (the same scene `gpu`
  * was uploaded from; neither is referenced for longer than the context
  * lives, and `scene` not after the call). desc may be NULL (all defaults).
- * Fails (NULL, one-line reason in err) on an invalid desc, when a k-buffer
- * exceeds maxStorageBufferRange, or on a Vulkan/memory failure. */
+ * Fails (NULL, one-line reason in err) on an invalid desc, when a per-pixel
+ * buffer of the smallest tile exceeds maxStorageBufferRange, or on a
+ * Vulkan/memory failure. */
 pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu, const pvs_desc* desc,
                         char* err, size_t err_size);
 
