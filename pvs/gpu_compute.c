@@ -157,9 +157,10 @@ void pvs_record_resolve(pvs_context* ctx, VkCommandBuffer cmd)
 static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
 {
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_PIXCOUNT].buffer, 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KHEADS].buffer, 0, VK_WHOLE_SIZE, TV_PVS_NO_PAGE);
-    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KLINKS].buffer, 0, VK_WHOLE_SIZE, TV_PVS_NO_PAGE);
-    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KALLOC].buffer, TV_PVS_A_TAKEN * 4, 4, 0);
+    for (uint32_t b = TV_PVS_BIND_KHEADS; ctx->kb_paged && b <= TV_PVS_BIND_KLINKS; b++)
+        vkCmdFillBuffer(cmd, ctx->buffers[b].buffer, 0, VK_WHOLE_SIZE, TV_PVS_NO_PAGE);
+    if (ctx->kb_paged)
+        vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KALLOC].buffer, TV_PVS_A_TAKEN * 4, 4, 0);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_LOST].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_SPILL].buffer, 0, sizeof(uint32_t), 0); /* the list's length */
     uint32_t c[TV_PVS_C_PER_LAYER] = {0};

@@ -22,6 +22,8 @@
 /* Larger images are tiled; the largest per-pixel buffer, the carry, then
  * takes at most 256 MiB (lavapipe's maxStorageBufferRange allows half). */
 #define PVS_DEFAULT_TILE_PIXELS (1024u * 1024u)
+/* The flat k-buffer layout keeps every list's k slots: 128 MiB at k = 16. */
+#define PVS_DEFAULT_FLAT_TILE_PIXELS (512u * 512u)
 /* The k-buffer pool starts at this many pages per tile pixel, whatever k
  * (most lists hold 0-2 entries; docs/pvs-gpu-passes.md, "k-buffer pages"),
  * and grows when a computation runs out (pvs_pool_regrow). */
@@ -117,6 +119,8 @@ bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* er
 
 void pvs_record_pages_taken(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, uint32_t layer)
 {
+    if (!ctx->kb_paged)
+        return;
     uint32_t tile = t->y / ctx->grid.tile_height * ctx->grid.cols + t->x / ctx->grid.tile_width;
     VkBuffer b = ctx->buffers[TV_PVS_BIND_KALLOC].buffer;
     vkCmdCopyBuffer(cmd, b, b, 1,
@@ -144,6 +148,16 @@ static uint64_t kbuffer_bytes(const pvs_context* ctx)
 
 void pvs_kbuffer_stats(const pvs_context* ctx, pvs_stats* st)
 {
+    st->kbuffer_bytes = kbuffer_bytes(ctx);
+    if (!ctx->kb_paged) { /* the bytes of the entries P3 read (pvs_resolve.glsl, finish_pixel) */
+        const uint32_t* s = ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped;
+        for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+            ctx->per_layer[l].kbuffer_bytes_used = s[4 * TV_PVS_LAYER_STATS_STRIDE * l];
+            if (ctx->per_layer[l].kbuffer_bytes_used > st->kbuffer_bytes_used)
+                st->kbuffer_bytes_used = ctx->per_layer[l].kbuffer_bytes_used;
+        }
+        return;
+    }
     const uint64_t page_bytes = TV_PVS_PAGE * 8 + 4; /* slots and link */
     for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
         uint32_t asked = pages_asked(ctx, l), have = ctx->pool_pages;
@@ -154,7 +168,6 @@ void pvs_kbuffer_stats(const pvs_context* ctx, pvs_stats* st)
             st->kbuffer_lost = asked - have;
     }
     st->kbuffer_bytes_used += ctx->buffers[TV_PVS_BIND_KHEADS].size;
-    st->kbuffer_bytes = kbuffer_bytes(ctx);
 }
 
 bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_size)
@@ -172,6 +185,9 @@ bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_si
 
 bool pvs_pool_regrow(pvs_context* ctx, bool* again, char* err, size_t err_size)
 {
+    *again = false;
+    if (!ctx->kb_paged) /* the flat layout cannot run out */
+        return true;
     uint32_t need = 0, have = ctx->pool_pages;
     for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
         uint32_t asked = pages_asked(ctx, l);
@@ -210,8 +226,8 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_LAYER_TRIS, drawn * 4},
         {TV_PVS_BIND_COUNTERS, TV_PVS_C_COUNT * 4},
         {TV_PVS_BIND_KPOOL, (VkDeviceSize)ctx->pool_pages * TV_PVS_PAGE * 8},
-        {TV_PVS_BIND_KHEADS, pixels * TV_PVS_LISTS * 4},
-        {TV_PVS_BIND_KLINKS, (VkDeviceSize)ctx->pool_pages * 4},
+        {TV_PVS_BIND_KHEADS, ctx->kb_paged ? pixels * TV_PVS_LISTS * 4 : 4}, /* flat: unused */
+        {TV_PVS_BIND_KLINKS, ctx->kb_paged ? (VkDeviceSize)ctx->pool_pages * 4 : 4},
         {TV_PVS_BIND_PIXCOUNT, pixels * 16},
         {TV_PVS_BIND_PIXSTATE, pixels * 16},
         {TV_PVS_BIND_CARRY, pixels * TV_K_CARRY * 16},
@@ -345,13 +361,40 @@ static uint32_t coop_width(const rnd_context* rnd)
     return sub.subgroupSize < 4 ? 4 : sub.subgroupSize > 128 ? 128 : sub.subgroupSize;
 }
 
+/* The flat layout's pages per pixel: every list holds k slots, as the layout
+ * before the pool had it. */
+static uint32_t flat_pages_per_pixel(const pvs_context* ctx)
+{
+    return TV_PVS_LISTS * ((ctx->k + TV_PVS_PAGE - 1) / TV_PVS_PAGE);
+}
+
+/* The paged pool's first and largest size (its slots fit one storage
+ * buffer); the flat layout's fixed one (pvs_common.glsl, kb_flat_page). */
+static void size_pool(pvs_context* ctx, const pvs_desc* d)
+{
+    const uint64_t tile_pixels = (uint64_t)ctx->grid.tile_width * ctx->grid.tile_height;
+    if (!ctx->kb_paged) {
+        ctx->pool_pages = ctx->max_pool_pages = (uint32_t)(tile_pixels * flat_pages_per_pixel(ctx));
+        return;
+    }
+    uint64_t cap = ctx->rnd->props.limits.maxStorageBufferRange / (TV_PVS_PAGE * 8);
+    cap = d->max_kbuffer_pages && d->max_kbuffer_pages < cap ? d->max_kbuffer_pages : cap;
+    uint64_t start = d->kbuffer_pages ? d->kbuffer_pages : tile_pixels * PVS_DEFAULT_POOL_PAGES_PER_PIXEL;
+    ctx->max_pool_pages = (uint32_t)cap;
+    ctx->pool_pages = (uint32_t)(start < cap ? start : cap);
+}
+
 /* The tile grid: at most `max_tile_pixels` pixels (0: the default) per tile
  * and no per-pixel buffer over maxStorageBufferRange (the largest per pixel
  * is the carry). */
 static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
 {
-    uint64_t fit = ctx->rnd->props.limits.maxStorageBufferRange / ((uint64_t)TV_K_CARRY * 16);
-    uint64_t budget = max_tile_pixels ? max_tile_pixels : PVS_DEFAULT_TILE_PIXELS;
+    uint64_t per_pixel = (uint64_t)TV_K_CARRY * 16;
+    uint64_t flat = ctx->kb_paged ? 0 : (uint64_t)flat_pages_per_pixel(ctx) * TV_PVS_PAGE * 8;
+    uint64_t fit = ctx->rnd->props.limits.maxStorageBufferRange / (flat > per_pixel ? flat : per_pixel);
+    uint64_t budget = max_tile_pixels      ? max_tile_pixels
+                      : ctx->kb_paged      ? PVS_DEFAULT_TILE_PIXELS
+                                           : PVS_DEFAULT_FLAT_TILE_PIXELS;
     return pvs_tile_grid_make(ctx->width, ctx->height, budget < fit ? budget : fit);
 }
 
@@ -402,15 +445,12 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     ctx->width = d.width ? d.width : PVS_DEFAULT_WIDTH;
     ctx->height = d.height ? d.height : PVS_DEFAULT_HEIGHT;
     ctx->k = d.k ? d.k : PVS_DEFAULT_K;
+    bool cpu = rnd->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    pvs_kbuffer_layout layout = d.kbuffer_layout ? d.kbuffer_layout : cpu ? PVS_KBUFFER_FLAT : PVS_KBUFFER_PAGED;
+    assert(layout == PVS_KBUFFER_FLAT || layout == PVS_KBUFFER_PAGED);
+    ctx->kb_paged = layout == PVS_KBUFFER_PAGED;
     ctx->grid = tile_grid(ctx, d.max_tile_pixels);
-    /* the pool: its slots must fit one storage buffer */
-    uint64_t cap = ctx->rnd->props.limits.maxStorageBufferRange / (TV_PVS_PAGE * 8);
-    cap = d.max_kbuffer_pages && d.max_kbuffer_pages < cap ? d.max_kbuffer_pages : cap;
-    uint64_t start = d.kbuffer_pages ? d.kbuffer_pages
-                                     : (uint64_t)ctx->grid.tile_width * ctx->grid.tile_height *
-                                           PVS_DEFAULT_POOL_PAGES_PER_PIXEL;
-    ctx->max_pool_pages = (uint32_t)cap;
-    ctx->pool_pages = (uint32_t)(start < cap ? start : cap);    bool cpu = rnd->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    size_pool(ctx, &d);
     ctx->explain = d.explain;
     ctx->coop_sort_min = d.coop_sort_min ? d.coop_sort_min : cpu ? PVS_NEVER_COOP : PVS_DEFAULT_COOP_SORT_MIN;
     ctx->coop_width = coop_width(rnd);
@@ -438,9 +478,9 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
         pvs_destroy(ctx);
         return NULL;
     }
-    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, k-buffer pool %u pages (%.1f MiB)",
+    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, %s k-buffers of %u pages (%.1f MiB)",
            scene->name, ctx->octree.leaf_count, ctx->width, ctx->height, pvs_tile_count(&ctx->grid),
-           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k, ctx->pool_pages,
+           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k, ctx->kb_paged ? "paged" : "flat", ctx->pool_pages,
            (double)kbuffer_bytes(ctx) / (1024.0 * 1024.0));
     return ctx;
 }

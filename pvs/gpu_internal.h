@@ -53,6 +53,7 @@ struct pvs_context {
     const rnd_gpu_scene* gpu;
     uint32_t width, height, k;
     pvs_tile_grid grid;     /* the per-pixel buffers hold one tile */
+    uint32_t kb_paged;       /* pvs_desc.kbuffer_layout is PVS_KBUFFER_PAGED (a specialisation constant) */
     uint32_t pool_pages;     /* k-buffer pages the pool holds (pvs_reserve_pool) ... */
     uint32_t max_pool_pages; /* ... and may grow to */
     uint32_t coop_sort_min; /* specialisation constants of P3's per-thread pass ... */

@@ -29,13 +29,26 @@ extern "C" {
 
 typedef struct pvs_context pvs_context;
 
+/* Where P2 finds page j of a pixel's list (docs/pvs-gpu-passes.md, "k-buffer
+ * pages"). FLAT: at a fixed place, k slots per list and pixel (no
+ * allocation; the tile is what one buffer holds of those). PAGED: chains of
+ * pages taken from a pool as lists fill (memory follows use; the pool grows
+ * and the computation runs again when it runs out), which costs P2 its
+ * atomics, twice P2's time on lavapipe. */
+typedef enum pvs_kbuffer_layout {
+    PVS_KBUFFER_DEFAULT = 0, /* PAGED on a GPU, FLAT on a CPU device */
+    PVS_KBUFFER_FLAT = 1,
+    PVS_KBUFFER_PAGED = 2,
+} pvs_kbuffer_layout;
+
 typedef struct pvs_desc {
     uint32_t width, height;          /* PVS resolution; 0: 512 x 512 */
     uint32_t k;                      /* k-buffer slots per pixel and kind, 1..TV_K_FRONT; 0: 16 */
-    uint32_t kbuffer_pages;          /* k-buffer pool's first size, in pages of TV_PVS_PAGE entries (it
+    pvs_kbuffer_layout kbuffer_layout; /* 0: PAGED on a GPU, FLAT on a CPU device */
+    uint32_t kbuffer_pages;          /* PAGED: k-buffer pool's first size, in pages of TV_PVS_PAGE entries (it
                                         grows when a computation runs out, and the context keeps the
                                         grown size); 0: 2 per pixel of a tile */
-    uint32_t max_kbuffer_pages;      /* most pages the pool grows to; 0: what maxStorageBufferRange
+    uint32_t max_kbuffer_pages;      /* PAGED: most pages the pool grows to; 0: what maxStorageBufferRange
                                         holds. Past it, entries are lost as overflow (conservative) */
     uint32_t octree_cap;             /* triangles per octree leaf; 0: PVS_OCTREE_DEFAULT_CAP */
     uint32_t octree_depth;           /* 0: PVS_OCTREE_DEFAULT_DEPTH */
@@ -49,7 +62,8 @@ typedef struct pvs_desc {
                                         thread; 0: 8 (the paper's N) on a GPU, never on a CPU device;
                                         UINT32_MAX: never */
     uint32_t max_tile_pixels;        /* the image is computed in tiles of at most this many pixels
-                                        (pvs/tiles.h; per-pixel memory follows the tile); 0: 1024 x 1024;
+                                        (pvs/tiles.h; per-pixel memory follows the tile); 0: 1024 x 1024
+                                        (FLAT: 512 x 512);
                                         lowered to what maxStorageBufferRange allows */
     uint32_t max_proxies;            /* most proxies one pvs_compute_dynamic takes; 0: 1024 */
     bool explain;                    /* record which rules output each triangle (pvs_result.reasons);

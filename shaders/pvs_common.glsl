@@ -23,6 +23,17 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
     uint explain, kb_holes, pad1, pad2;     // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain); kb_holes: pvs_kbuffer.glsl
 } view;
 
+// pvs_desc.kbuffer_layout: the only difference between the layouts is how
+// page j of a pixel's list is found. PAGED: through the list's head and the
+// pages' links (pvs_kbuffer.glsl, pvs_follow). FLAT: page j of list l of
+// pixel p is kb_flat_page(p, l) + j, every list holding k slots; no
+// allocation, no heads or links.
+layout(constant_id = TV_PVS_SPEC_KB_PAGED) const bool KB_PAGED = true;
+
+// Page + 1 (as heads and links hold pages) of the first page of list `list`
+// of pixel p in the FLAT layout.
+uint kb_flat_page(uint p, uint list) { return (TV_PVS_LISTS * p + list) * ((view.k + TV_PVS_PAGE - 1u) / TV_PVS_PAGE) + 1u; }
+
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ADJ) readonly buffer pvs_adj_buf { uint adjacency[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LAYER_TRIS) readonly buffer pvs_layer_buf { uint layer_tris[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_FF) PVS_RW buffer pvs_ff_buf { uint ff_list[]; };

@@ -69,11 +69,16 @@ uint pvs_follow(bool head, uint at)
 }
 
 // Stores entry e in slot `slot` (< k) of list `list` at pixel p, through the
-// list's pages (pvs_kbuf_push in pvs/kbuffer.c). False when the pool had no
+// list's pages (pvs_kbuf_push in pvs/kbuffer.c; FLAT: slot j of a list's k
+// consecutive slots, its pages). False when the PAGED pool had no
 // page for it: the list's counter then reads as overflowed
 // (TV_PVS_COUNT_LOST) and the caller treats the entry as one past k.
 bool pvs_store(uint p, uint list, uint slot, uvec2 e)
 {
+    if (!KB_PAGED) { // cannot run out
+        kpool[TV_PVS_PAGE * (kb_flat_page(p, list) - 1u) + slot] = e;
+        return true;
+    }
     uint page = pvs_follow(true, TV_PVS_LISTS * p + list);
     for (uint i = slot / TV_PVS_PAGE; i > 0u && page != TV_PVS_NO_PAGE; i--)
         page = pvs_follow(false, page - 1u);

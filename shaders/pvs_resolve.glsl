@@ -123,7 +123,10 @@ struct kb_cursor {
     uint page, slot, end;
 };
 
-kb_cursor kb_open(uint list) { return kb_cursor(kheads[TV_PVS_LISTS * P + list], 0u, min(cnt[list], view.k)); }
+kb_cursor kb_open(uint list)
+{
+    return kb_cursor(KB_PAGED ? kheads[TV_PVS_LISTS * P + list] : kb_flat_page(P, list), 0u, min(cnt[list], view.k));
+}
 
 bool kb_next(inout kb_cursor c, out uvec2 e)
 {
@@ -131,7 +134,7 @@ bool kb_next(inout kb_cursor c, out uvec2 e)
     while (c.slot < c.end && c.page != TV_PVS_NO_PAGE) {
         e = kpool[TV_PVS_PAGE * (c.page - 1u) + c.slot % TV_PVS_PAGE];
         if (++c.slot % TV_PVS_PAGE == 0u)
-            c.page = klinks[c.page - 1u];
+            c.page = KB_PAGED ? klinks[c.page - 1u] : c.page + 1u;
         if (e.x != TV_PVS_HOLE)
             return true;
     }
@@ -580,6 +583,10 @@ void finish_pixel(uint seq_len, bool handled)
                         floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
     for (uint c = 0u; c < carry_count; c++)
         carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
+    if (!KB_PAGED) { // the bytes read: FLAT's kbuffer_bytes_used (PAGED counts the pages taken)
+        uvec4 stored = min(cnt, uvec4(view.k));
+        atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w));
+    }
     atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].y, 1u);
     atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].z, seq_len);
     if (overflowed)

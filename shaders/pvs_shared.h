@@ -31,6 +31,9 @@
  * the counter then reads as over k (overflowed), and the entry is lost as one
  * past k is. */
 #define TV_PVS_COUNT_LOST 0x80000000u
+/* Specialisation constant of P2's fragment shaders and P3 (pvs_common.glsl,
+ * KB_PAGED): 1 for pvs_desc.kbuffer_layout PAGED, 0 for FLAT. */
+#define TV_PVS_SPEC_KB_PAGED 1
 /* Most workgroups of P3's cooperative pass (Vulkan's minimum of
  * maxComputeWorkGroupCount[0]); each loops over the deferred pixels. */
 #define TV_PVS_MAX_COOP_GROUPS 65535u
