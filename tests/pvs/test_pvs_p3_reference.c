@@ -310,7 +310,7 @@ static void lay_out_flat(pvs_kpages* pages, uint32_t heads[PIXELS][TV_PVS_LISTS]
     memset(pages->slots, 0xFF, sizeof pages->slots[0] * TV_PVS_PAGE * pages->page_count);
     for (uint32_t p = 0; p < PIXELS; p++)
         for (uint32_t l = 0; l < TV_PVS_LISTS; l++) {
-            uint32_t first = (TV_PVS_LISTS * p + l) * per_list;
+            uint32_t first = (l * PIXELS + p) * per_list;
             heads[p][l] = first + 1;
             for (uint32_t j = 0; j < per_list; j++)
                 pages->links[first + j] = j + 1 < per_list ? first + j + 2 : TV_PVS_NO_PAGE;
