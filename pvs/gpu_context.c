@@ -386,7 +386,7 @@ static void size_pool(pvs_context* ctx, const pvs_desc* d)
 
 /* The tile grid: at most `max_tile_pixels` pixels (0: the default) per tile
  * and no per-pixel buffer over maxStorageBufferRange (the largest per pixel
- * is the carry). */
+ * is the carry, or the flat layout's pool: 512 B at k = 16). */
 static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
 {
     uint64_t per_pixel = (uint64_t)TV_K_CARRY * 16;
