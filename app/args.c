@@ -138,6 +138,16 @@ void tv_args_usage(const char* command, const char* summary, const tv_arg* args,
     printf("  %-24s %s\n", "--help", "show this help");
 }
 
+int tv_arg_kbuffer_layout(const char* value)
+{
+    if (!value)
+        return 0;
+    if (strcmp(value, "flat") == 0 || strcmp(value, "paged") == 0)
+        return value[0] == 'f' ? 1 : 2;
+    tv_log(TV_LOG_ERROR, "--kbuffer-layout %s: must be flat or paged", value);
+    return -1;
+}
+
 bool tv_arg_require(const char* name, double value, bool ok, const char* requirement)
 {
     if (!ok)

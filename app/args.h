@@ -42,6 +42,7 @@ typedef enum tv_args_result {
 #define TV_ARG_MAX_LAYERS(out) {"max-layers", TV_ARG_INT, (out), "N", "tr: merge octree layers into at most N (default -1: 14 on a GPU, never on a CPU device; 0: never)"}
 #define TV_ARG_GT_CACHE(out) {"gt-cache", TV_ARG_STRING, (out), "DIR", \
     "keep each viewcell's ground truth in DIR and reuse it when scene and settings match (docs/bench.md)"}
+#define TV_ARG_KBUFFER_LAYOUT(out) {"kbuffer-layout", TV_ARG_STRING, (out), "L", "tr: k-buffer layout, flat or paged (default: paged on a GPU, flat on a CPU device)"}
 #define TV_ARG_SAMPLES(out) {"samples", TV_ARG_INT, (out), "N", "views per viewcell of the sampled ground truth (default 200)"}
 
 /* The defaults those rows state. */
@@ -54,6 +55,11 @@ static inline uint32_t tv_arg_max_layers(int n)
 {
     return n > 0 ? (uint32_t)n : n == 0 ? UINT32_MAX : 0;
 }
+
+/* pvs_desc.kbuffer_layout (pvs_kbuffer_layout) for a --kbuffer-layout value:
+ * 0 (the device's default) for NULL, 1 for "flat", 2 for "paged"; otherwise
+ * prints the one-line error and returns -1. */
+int tv_arg_kbuffer_layout(const char* value);
 
 /* When !ok, prints the one-line error "--NAME VALUE: must be REQUIREMENT"
  * (for example "--frames -3: must be >= 0"). Returns ok. */

@@ -21,12 +21,15 @@ static void print_tr_stats(const pvs_stats* s)
            s->silhouettes);
     printf("active pixels     %llu (summed over layers), mean trim sequence %.2f, %llu sorted by a workgroup\n",
            (unsigned long long)s->active_pixels, s->mean_sequence, (unsigned long long)s->coop_pixels);
-    printf("k-buffers         %.1f MiB allocated (%u tile%s), %.1f MiB used (largest layer)\n",
-           s->kbuffer_bytes / 1048576.0, s->tiles, s->tiles == 1 ? "" : "s", s->kbuffer_bytes_used / 1048576.0);
+    printf("k-buffers         %.1f MiB allocated (%u tile%s), %.1f MiB used (fullest layer), pool grown %u time%s, "
+           "%llu entries lost\n",
+           s->kbuffer_bytes / 1048576.0, s->tiles, s->tiles == 1 ? "" : "s", s->kbuffer_bytes_used / 1048576.0,
+           s->kbuffer_regrows, s->kbuffer_regrows == 1 ? "" : "s", (unsigned long long)s->kbuffer_lost);
     printf("overflow          %llu pixels, %llu front fragments (handled conservatively)\n",
            (unsigned long long)s->overflow_pixels, (unsigned long long)s->overflow_fronts);
     printf("per layer         tris: in the layer / fronts + backs drawn, regions: trim regions, active: pixels\n"
-           "                  resolved, seq: mean trim sequence, ovf: overflowing pixels, KiB: k-buffer entries read\n");
+           "                  resolved, seq: mean trim sequence, ovf: overflowing pixels, KiB: k-buffer pages taken\n"
+           "                  (flat layout: entries read)\n");
     printf("%5s %8s %8s %8s %8s %8s %6s %6s %8s %9s %9s %9s\n", "layer", "tris", "fronts", "backs", "regions",
            "active", "seq", "ovf", "KiB", "P1 ms", "P2 ms", "P3 ms");
     for (uint32_t l = 0; s->per_layer && l < s->layers; l++) {
@@ -70,10 +73,11 @@ static bool compute_again(pvs_method* m, const pvs_request* req, const uint32_t*
 
 int tv_cmd_pvs(int argc, char** argv)
 {
-    const char *scene = NULL, *method = "tr", *ids_out = NULL;
+    const char *scene = NULL, *method = "tr", *ids_out = NULL, *layout = NULL;
     float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
-    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS, repeat = 1;
+    int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS, pages = 0;
+    int repeat = 1;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
@@ -83,11 +87,14 @@ int tv_cmd_pvs(int argc, char** argv)
         TV_ARG_FOV_PVS(&fov_pvs),
         {"res", TV_ARG_RES, res, "WxH", "PVS resolution (default 512x512)"},
         TV_ARG_K(&k),
+        TV_ARG_KBUFFER_LAYOUT(&layout),
         TV_ARG_MAX_LAYERS(&max_layers),
         {"coop-min", TV_ARG_INT, &coop_min, "N",
          "tr: sort trim sequences of >= N entries with a workgroup per pixel (default 8; 1000: never)"},
         {"tile-pixels", TV_ARG_INT, &tile_pixels, "N",
-         "tr: compute the image in tiles of at most N pixels (default 262144 = 512x512)"},
+         "tr: compute the image in tiles of at most N pixels (default 1024x1024, flat layout 512x512)"},
+        {"kbuffer-pages", TV_ARG_INT, &pages, "N",
+         "tr, paged: first size of the k-buffer page pool, in pages of 4 entries (default: 2 per tile pixel)"},
         TV_ARG_METHOD(&method),
         {"ids", TV_ARG_STRING, &ids_out, "FILE", "also write the triangle ids, one per line"},
         {"repeat", TV_ARG_INT, &repeat, "N",
@@ -99,13 +106,18 @@ int tv_cmd_pvs(int argc, char** argv)
     if (r != TV_ARGS_OK)
         return r == TV_ARGS_HELP ? 0 : 2;
     /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
+    int kb_layout = tv_arg_kbuffer_layout(layout);
     pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k,
+                                 .kbuffer_layout = (pvs_kbuffer_layout)kb_layout,
                                  .coop_sort_min = (uint32_t)coop_min, .max_tile_pixels = (uint32_t)tile_pixels,
+                                 .kbuffer_pages = (uint32_t)pages,
                                  .max_layers = tv_arg_max_layers(max_layers)},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
-    if (!tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
+    if (kb_layout < 0 || !tv_arg_require("k", k, k >= 1, ">= 1") ||
+        !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
         !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0") ||
+        !tv_arg_require("kbuffer-pages", pages, pages >= 0, ">= 0") ||
         !tv_arg_require("max-layers", max_layers, max_layers >= -1, ">= -1") ||
         !tv_arg_require("repeat", repeat, repeat >= 1, ">= 1"))
         return 2;

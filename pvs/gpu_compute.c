@@ -154,11 +154,15 @@ void pvs_record_resolve(pvs_context* ctx, VkCommandBuffer cmd)
     barrier(cmd);
 }
 
-/* Per-layer slots of the counters buffer (empty draws, an empty dispatch)
- * and the per-pixel k-buffer counters. */
+/* Per-layer slots of the counters buffer (empty draws, an empty dispatch),
+ * the per-pixel k-buffer counters and list heads, and the page pool. */
 static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
 {
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_PIXCOUNT].buffer, 0, VK_WHOLE_SIZE, 0);
+    for (uint32_t b = TV_PVS_BIND_KHEADS; ctx->kb_paged && b <= TV_PVS_BIND_KLINKS; b++)
+        vkCmdFillBuffer(cmd, ctx->buffers[b].buffer, 0, VK_WHOLE_SIZE, TV_PVS_NO_PAGE);
+    if (ctx->kb_paged)
+        vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KALLOC].buffer, TV_PVS_A_TAKEN * 4, 4, 0);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_LOST].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_SPILL].buffer, 0, sizeof(uint32_t), 0); /* the list's length */
     uint32_t c[TV_PVS_C_PER_LAYER] = {0};
@@ -240,7 +244,8 @@ static void reset_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t,
 {
     /* the spill list's layer stamps too: each tile runs every layer again */
     const uint32_t per_tile[] = {TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE, TV_PVS_BIND_ACTIVE, TV_PVS_BIND_SPILL};
-    const uint32_t per_computation[] = {TV_PVS_BIND_COUNTERS, TV_PVS_BIND_TRI_FLAGS, TV_PVS_BIND_LAYER_STATS};
+    const uint32_t per_computation[] = {TV_PVS_BIND_COUNTERS, TV_PVS_BIND_TRI_FLAGS, TV_PVS_BIND_LAYER_STATS,
+                                        TV_PVS_BIND_KALLOC};
     barrier(cmd); /* the previous tile's P4 is done with everything rewritten here */
     for (size_t i = 0; i < sizeof per_tile / sizeof per_tile[0]; i++)
         vkCmdFillBuffer(cmd, ctx->buffers[per_tile[i]].buffer, 0, VK_WHOLE_SIZE, 0);
@@ -330,6 +335,7 @@ static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
         barrier(cmd); /* the dilated pass reads the exact pass's centre depths */
         render_pass(ctx, cmd, t, 1, PASS_LAYER);
         barrier(cmd);
+        pvs_record_pages_taken(ctx, cmd, t, l);
         timestamp(ctx, cmd, ts);
         pvs_record_resolve(ctx, cmd);
         render_pass(ctx, cmd, t, 0, PASS_SPILL); /* both empty unless P3 asked for them */
@@ -435,6 +441,21 @@ static bool compact(pvs_context* ctx, pvs_result* out, char* err, size_t err_siz
     return true;
 }
 
+/* P1-P4 in one submission, again after the k-buffer pool grew
+ * (pvs_pool_regrow). */
+static bool run_gpu(pvs_context* ctx, pvs_stats* st, char* err, size_t err_size)
+{
+    for (bool again = true; again; st->kbuffer_regrows += again) {
+        if (!rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size))
+            return false;
+        record(ctx, ctx->stream.cmd);
+        if (!rnd_stream_submit_wait(ctx->rnd, &ctx->stream, err, err_size) ||
+            !pvs_pool_regrow(ctx, &again, err, err_size))
+            return false;
+    }
+    return true;
+}
+
 /* Totals and per-layer figures; per-layer ms were read with the timestamps. */
 static void collect_stats(pvs_context* ctx, pvs_stats* st)
 {
@@ -456,18 +477,15 @@ static void collect_stats(pvs_context* ctx, pvs_stats* st)
         pl->fronts = s[4] / 3;
         pl->backs = s[5] / 3;
         pl->silhouettes = s[6] / 6;
-        pl->kbuffer_bytes_used = s[0];
         pl->active_pixels = s[1];
         pl->sequence_entries = s[2];
         pl->overflow_pixels = s[3];
-        st->kbuffer_bytes_used = s[0] > st->kbuffer_bytes_used ? s[0] : st->kbuffer_bytes_used;
         st->active_pixels += s[1];
         seq += s[2];
         st->overflow_pixels += s[3];
     }
     st->mean_sequence = st->active_pixels ? (double)seq / (double)st->active_pixels : 0.0;
-    for (uint32_t b = TV_PVS_BIND_KFRONT; b <= TV_PVS_BIND_KUMBRA; b++)
-        st->kbuffer_bytes += ctx->buffers[b].size;
+    pvs_kbuffer_stats(ctx, st);
 }
 
 static bool check_proxies(const pvs_context* ctx, const pvs_proxy* proxies, uint32_t count, char* err,
@@ -564,10 +582,7 @@ bool pvs_compute_dynamic(pvs_context* ctx, const pvs_viewcell* vc, const pvs_pro
     st->ms[0] = tv_now_ms() - start;
 
     const double gpu_start = tv_now_ms();
-    if (!rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size))
-        return false;
-    record(ctx, ctx->stream.cmd);
-    if (!rnd_stream_submit_wait(ctx->rnd, &ctx->stream, err, err_size))
+    if (!run_gpu(ctx, st, err, err_size))
         return false;
     if (ctx->timestamps)
         read_timestamps(ctx, st);

@@ -1,6 +1,7 @@
 /* gpu_context.c - pvs_create / pvs_destroy: welding and adjacency, the
- * octree, the per-pixel GPU buffers (sized once from the resolution and k)
- * and the per-layer buffers (grown on demand by pvs_reserve). */
+ * octree, the per-pixel GPU buffers (sized once from the tile), the
+ * k-buffer page pool (grown on demand by pvs_pool_regrow) and the per-layer
+ * buffers (grown on demand by pvs_reserve). */
 #include "gpu_internal.h"
 
 #include "clock.h"
@@ -14,10 +15,19 @@
 
 #define PVS_DEFAULT_WIDTH 512u
 #define PVS_DEFAULT_HEIGHT 512u
+/* k = 32 overflows far less (docs/results.md) but exposes false negatives
+ * that overflow hid: quality_interior_walk, _interior_run_fixed and
+ * _sponza_walk lose pixels at k = 32 with the old layout too. */
 #define PVS_DEFAULT_K 16u
-/* The default resolution in one tile: larger images are tiled, and the
- * per-pixel memory stays what 512 x 512 needs (k-buffers 128 MiB at k = 16). */
-#define PVS_DEFAULT_TILE_PIXELS (512u * 512u)
+/* Larger images are tiled; the largest per-pixel buffer, the carry, then
+ * takes at most 256 MiB (lavapipe's maxStorageBufferRange allows half). */
+#define PVS_DEFAULT_TILE_PIXELS (1024u * 1024u)
+/* The flat k-buffer layout keeps every list's k slots: 128 MiB at k = 16. */
+#define PVS_DEFAULT_FLAT_TILE_PIXELS (512u * 512u)
+/* The k-buffer pool starts at this many pages per tile pixel, whatever k
+ * (most lists hold 0-2 entries; docs/pvs-gpu-passes.md, "k-buffer pages"),
+ * and grows when a computation runs out (pvs_pool_regrow). */
+#define PVS_DEFAULT_POOL_PAGES_PER_PIXEL 2u
 #define PVS_DEFAULT_MAX_PROXIES 1024u
 /* The paper's N. On a CPU device (lavapipe) the cooperative pass only
  * costs: a workgroup resolves one pixel where a SIMD batch of the per-thread
@@ -31,21 +41,22 @@ static const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | V
 static bool host_visible(uint32_t binding)
 {
     return binding == TV_PVS_BIND_VIEW || binding == TV_PVS_BIND_LAYER_TRIS || binding == TV_PVS_BIND_COUNTERS ||
-           binding == TV_PVS_BIND_TRI_FLAGS || binding == TV_PVS_BIND_LAYER_STATS || binding == TV_PVS_BIND_PROXIES;
+           binding == TV_PVS_BIND_TRI_FLAGS || binding == TV_PVS_BIND_LAYER_STATS || binding == TV_PVS_BIND_PROXIES ||
+           binding == TV_PVS_BIND_KALLOC;
 }
 
 static bool create_buffer(pvs_context* ctx, uint32_t binding, VkDeviceSize size, char* err, size_t err_size)
 {
     if (size > ctx->rnd->props.limits.maxStorageBufferRange) {
-        bool kbuffer = binding >= TV_PVS_BIND_KFRONT && binding <= TV_PVS_BIND_KUMBRA;
-        snprintf(err, err_size, "pvs: buffer %u needs %llu bytes, over maxStorageBufferRange %u (lower the PVS resolution%s)",
-                 binding, (unsigned long long)size, ctx->rnd->props.limits.maxStorageBufferRange,
-                 kbuffer ? " or k" : "");
+        snprintf(err, err_size, "pvs: buffer %u needs %llu bytes, over maxStorageBufferRange %u (lower the PVS resolution)",
+                 binding, (unsigned long long)size, ctx->rnd->props.limits.maxStorageBufferRange);
         return false;
     }
     VkBufferUsageFlags usage = storage;
     if (binding == TV_PVS_BIND_COUNTERS) /* indirect commands; the draw counts are copied into the layer stats */
         usage |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    if (binding == TV_PVS_BIND_KALLOC) /* each layer's page count is copied within it */
+        usage |= VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     rnd_buffer_destroy(ctx->rnd, &ctx->buffers[binding]);
     return rnd_buffer_create(ctx->rnd, size, usage, host_visible(binding), &ctx->buffers[binding], err, err_size);
 }
@@ -90,7 +101,9 @@ bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* er
     if (grow_layers) {
         uint32_t n = layers + layers / 2;
         if (!create_buffer(ctx, TV_PVS_BIND_LAYER_STATS, (VkDeviceSize)n * 16 * TV_PVS_LAYER_STATS_STRIDE, err,
-                           err_size))
+                           err_size) ||
+            !create_buffer(ctx, TV_PVS_BIND_KALLOC, (TV_PVS_A_LAYERS + (VkDeviceSize)pvs_tile_count(&ctx->grid) * n) * 4,
+                           err, err_size))
             return false;
         pvs_layer_stats* per_layer = realloc(ctx->per_layer, sizeof *per_layer * n);
         if (!per_layer) {
@@ -104,11 +117,104 @@ bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* er
     return true;
 }
 
+void pvs_record_pages_taken(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, uint32_t layer)
+{
+    if (!ctx->kb_paged)
+        return;
+    uint32_t tile = t->y / ctx->grid.tile_height * ctx->grid.cols + t->x / ctx->grid.tile_width;
+    VkBuffer b = ctx->buffers[TV_PVS_BIND_KALLOC].buffer;
+    vkCmdCopyBuffer(cmd, b, b, 1,
+                    &(VkBufferCopy){TV_PVS_A_TAKEN * 4, (TV_PVS_A_LAYERS + tile * ctx->layer_capacity + layer) * 4, 4});
+}
+
+/* The most pages P2 asked for in `layer` of one tile (past pool_pages where
+ * the pool ran out). */
+static uint32_t pages_asked(const pvs_context* ctx, uint32_t layer)
+{
+    const uint32_t* taken = (const uint32_t*)ctx->buffers[TV_PVS_BIND_KALLOC].mapped + TV_PVS_A_LAYERS;
+    uint32_t most = 0;
+    for (uint32_t t = 0; t < pvs_tile_count(&ctx->grid); t++) {
+        uint32_t n = taken[t * ctx->layer_capacity + layer];
+        most = n > most ? n : most;
+    }
+    return most;
+}
+
+static uint64_t kbuffer_bytes(const pvs_context* ctx)
+{
+    return ctx->buffers[TV_PVS_BIND_KPOOL].size + ctx->buffers[TV_PVS_BIND_KLINKS].size +
+           ctx->buffers[TV_PVS_BIND_KHEADS].size;
+}
+
+void pvs_kbuffer_stats(const pvs_context* ctx, pvs_stats* st)
+{
+    st->kbuffer_bytes = kbuffer_bytes(ctx);
+    if (!ctx->kb_paged) { /* the bytes of the entries P3 read (pvs_resolve.glsl, finish_pixel) */
+        const uint32_t* s = ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped;
+        for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+            ctx->per_layer[l].kbuffer_bytes_used = s[4 * TV_PVS_LAYER_STATS_STRIDE * l];
+            if (ctx->per_layer[l].kbuffer_bytes_used > st->kbuffer_bytes_used)
+                st->kbuffer_bytes_used = ctx->per_layer[l].kbuffer_bytes_used;
+        }
+        return;
+    }
+    const uint64_t page_bytes = TV_PVS_PAGE * 8 + 4; /* slots and link */
+    for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+        uint32_t asked = pages_asked(ctx, l), have = ctx->pool_pages;
+        ctx->per_layer[l].kbuffer_bytes_used = (asked < have ? asked : have) * page_bytes;
+        if (ctx->per_layer[l].kbuffer_bytes_used > st->kbuffer_bytes_used)
+            st->kbuffer_bytes_used = ctx->per_layer[l].kbuffer_bytes_used;
+        if (asked > have && asked - have > st->kbuffer_lost)
+            st->kbuffer_lost = asked - have;
+    }
+    st->kbuffer_bytes_used += ctx->buffers[TV_PVS_BIND_KHEADS].size;
+}
+
+bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_size)
+{
+    pages = pages < ctx->max_pool_pages ? pages : ctx->max_pool_pages;
+    if (pages <= ctx->pool_pages)
+        return true;
+    if (!create_buffer(ctx, TV_PVS_BIND_KPOOL, (VkDeviceSize)pages * TV_PVS_PAGE * 8, err, err_size) ||
+        !create_buffer(ctx, TV_PVS_BIND_KLINKS, (VkDeviceSize)pages * 4, err, err_size))
+        return false;
+    ctx->pool_pages = pages;
+    pvs_write_descriptors(ctx);
+    return true;
+}
+
+bool pvs_pool_regrow(pvs_context* ctx, bool* again, char* err, size_t err_size)
+{
+    *again = false;
+    if (!ctx->kb_paged) /* the flat layout cannot run out */
+        return true;
+    uint32_t need = 0, have = ctx->pool_pages;
+    for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
+        uint32_t asked = pages_asked(ctx, l);
+        need = asked > need ? asked : need;
+    }
+    pvs_view_gpu* view = ctx->buffers[TV_PVS_BIND_VIEW].mapped;
+    *again = need > have && (have < ctx->max_pool_pages || !view->kb_holes);
+    if (!*again)
+        return true;
+    if (have >= ctx->max_pool_pages) { /* at the largest pool: once more, with the lost slots marked */
+        view->kb_holes = 1;
+        tv_log(TV_LOG_INFO, "pvs: the k-buffer pool of %u pages, the most allowed, ran out (%u asked for): "
+               "entries are lost as overflow", have, need);
+        return true;
+    }
+    uint32_t twice = have > UINT32_MAX / 2 ? UINT32_MAX : 2 * have;
+    if (!pvs_reserve_pool(ctx, need > twice ? need : twice, err, err_size))
+        return false;
+    tv_log(TV_LOG_INFO, "pvs: the k-buffer pool of %u pages ran out (%u asked for): %u pages, computing again", have,
+           need, ctx->pool_pages);
+    return true;
+}
+
 /* Buffers sized by the scene or the tile, created once. */
 static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
 {
     const VkDeviceSize pixels = (VkDeviceSize)ctx->grid.tile_width * ctx->grid.tile_height;
-    const VkDeviceSize slots = pixels * ctx->k;
     const VkDeviceSize tris = ctx->triangle_count ? ctx->triangle_count : 1;
     const VkDeviceSize drawn = tris + 12 * (VkDeviceSize)ctx->max_proxies; /* proxy faces follow the scene's */
     struct {
@@ -119,10 +225,9 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_ADJ, tris * 12},
         {TV_PVS_BIND_LAYER_TRIS, drawn * 4},
         {TV_PVS_BIND_COUNTERS, TV_PVS_C_COUNT * 4},
-        {TV_PVS_BIND_KFRONT, slots * 8},
-        {TV_PVS_BIND_KBACK, slots * 8},
-        {TV_PVS_BIND_KTRIM, slots * 8},
-        {TV_PVS_BIND_KUMBRA, slots * 8},
+        {TV_PVS_BIND_KPOOL, (VkDeviceSize)ctx->pool_pages * TV_PVS_PAGE * 8},
+        {TV_PVS_BIND_KHEADS, ctx->kb_paged ? pixels * TV_PVS_LISTS * 4 : 4}, /* flat: unused */
+        {TV_PVS_BIND_KLINKS, ctx->kb_paged ? (VkDeviceSize)ctx->pool_pages * 4 : 4},
         {TV_PVS_BIND_PIXCOUNT, pixels * 16},
         {TV_PVS_BIND_PIXSTATE, pixels * 16},
         {TV_PVS_BIND_CARRY, pixels * TV_K_CARRY * 16},
@@ -256,15 +361,40 @@ static uint32_t coop_width(const rnd_context* rnd)
     return sub.subgroupSize < 4 ? 4 : sub.subgroupSize > 128 ? 128 : sub.subgroupSize;
 }
 
+/* The flat layout's pages per pixel: every list holds k slots, as the layout
+ * before the pool had it. */
+static uint32_t flat_pages_per_pixel(const pvs_context* ctx)
+{
+    return TV_PVS_LISTS * ((ctx->k + TV_PVS_PAGE - 1) / TV_PVS_PAGE);
+}
+
+/* The paged pool's first and largest size (its slots fit one storage
+ * buffer); the flat layout's fixed one (pvs_common.glsl, kb_flat_page). */
+static void size_pool(pvs_context* ctx, const pvs_desc* d)
+{
+    const uint64_t tile_pixels = (uint64_t)ctx->grid.tile_width * ctx->grid.tile_height;
+    if (!ctx->kb_paged) {
+        ctx->pool_pages = ctx->max_pool_pages = (uint32_t)(tile_pixels * flat_pages_per_pixel(ctx));
+        return;
+    }
+    uint64_t cap = ctx->rnd->props.limits.maxStorageBufferRange / (TV_PVS_PAGE * 8);
+    cap = d->max_kbuffer_pages && d->max_kbuffer_pages < cap ? d->max_kbuffer_pages : cap;
+    uint64_t start = d->kbuffer_pages ? d->kbuffer_pages : tile_pixels * PVS_DEFAULT_POOL_PAGES_PER_PIXEL;
+    ctx->max_pool_pages = (uint32_t)cap;
+    ctx->pool_pages = (uint32_t)(start < cap ? start : cap);
+}
+
 /* The tile grid: at most `max_tile_pixels` pixels (0: the default) per tile
  * and no per-pixel buffer over maxStorageBufferRange (the largest per pixel
- * is the carry, or the k-buffers at k = TV_K_FRONT). */
+ * is the carry, or the flat layout's pool: 512 B at k = 16). */
 static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
 {
     uint64_t per_pixel = (uint64_t)TV_K_CARRY * 16;
-    per_pixel = 8ull * ctx->k > per_pixel ? 8ull * ctx->k : per_pixel;
-    uint64_t fit = ctx->rnd->props.limits.maxStorageBufferRange / per_pixel;
-    uint64_t budget = max_tile_pixels ? max_tile_pixels : PVS_DEFAULT_TILE_PIXELS;
+    uint64_t flat = ctx->kb_paged ? 0 : (uint64_t)flat_pages_per_pixel(ctx) * TV_PVS_PAGE * 8;
+    uint64_t fit = ctx->rnd->props.limits.maxStorageBufferRange / (flat > per_pixel ? flat : per_pixel);
+    uint64_t budget = max_tile_pixels      ? max_tile_pixels
+                      : ctx->kb_paged      ? PVS_DEFAULT_TILE_PIXELS
+                                           : PVS_DEFAULT_FLAT_TILE_PIXELS;
     return pvs_tile_grid_make(ctx->width, ctx->height, budget < fit ? budget : fit);
 }
 
@@ -332,8 +462,12 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     ctx->width = d.width ? d.width : PVS_DEFAULT_WIDTH;
     ctx->height = d.height ? d.height : PVS_DEFAULT_HEIGHT;
     ctx->k = d.k ? d.k : PVS_DEFAULT_K;
-    ctx->grid = tile_grid(ctx, d.max_tile_pixels);
     bool cpu = rnd->props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    pvs_kbuffer_layout layout = d.kbuffer_layout ? d.kbuffer_layout : cpu ? PVS_KBUFFER_FLAT : PVS_KBUFFER_PAGED;
+    assert(layout == PVS_KBUFFER_FLAT || layout == PVS_KBUFFER_PAGED);
+    ctx->kb_paged = layout == PVS_KBUFFER_PAGED;
+    ctx->grid = tile_grid(ctx, d.max_tile_pixels);
+    size_pool(ctx, &d);
     ctx->explain = d.explain;
     ctx->coop_sort_min = d.coop_sort_min ? d.coop_sort_min : cpu ? PVS_NEVER_COOP : PVS_DEFAULT_COOP_SORT_MIN;
     ctx->coop_width = coop_width(rnd);
@@ -361,12 +495,10 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
         pvs_destroy(ctx);
         return NULL;
     }
-    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, k-buffers %.1f MiB",
+    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, %s k-buffers of %u pages (%.1f MiB)",
            scene->name, ctx->octree.leaf_count, ctx->width, ctx->height, pvs_tile_count(&ctx->grid),
-           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k,
-           (double)(ctx->buffers[TV_PVS_BIND_KFRONT].size + ctx->buffers[TV_PVS_BIND_KBACK].size +
-                    ctx->buffers[TV_PVS_BIND_KTRIM].size + ctx->buffers[TV_PVS_BIND_KUMBRA].size) /
-               (1024.0 * 1024.0));
+           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k, ctx->kb_paged ? "paged" : "flat", ctx->pool_pages,
+           (double)kbuffer_bytes(ctx) / (1024.0 * 1024.0));
     return ctx;
 }
 

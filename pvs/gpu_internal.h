@@ -25,7 +25,7 @@ typedef struct pvs_view_gpu {
     float near_dist, delta, focal_px, max_width;      /* max_width: clamp of infinite trim widths */
     uint32_t width, height, k, triangle_count;
     uint32_t tile_x, tile_y, tile_w, tile_h; /* rewritten per tile by the command buffer */
-    uint32_t explain, pad[3];                /* pvs_desc.explain */
+    uint32_t explain, kb_holes, pad[2];      /* pvs_desc.explain; kb_holes: pvs_pool_regrow */
 } pvs_view_gpu;
 _Static_assert(offsetof(pvs_view_gpu, apex) == 64 && offsetof(pvs_view_gpu, up) == 112 &&
                    offsetof(pvs_view_gpu, tan_half_x) == 128 && offsetof(pvs_view_gpu, near_dist) == 144 &&
@@ -54,6 +54,9 @@ struct pvs_context {
     const rnd_gpu_scene* gpu;
     uint32_t width, height, k;
     pvs_tile_grid grid;     /* the per-pixel buffers hold one tile */
+    uint32_t kb_paged;       /* pvs_desc.kbuffer_layout is PVS_KBUFFER_PAGED (a specialisation constant) */
+    uint32_t pool_pages;     /* k-buffer pages the pool holds (pvs_reserve_pool) ... */
+    uint32_t max_pool_pages; /* ... and may grow to */
     uint32_t coop_sort_min; /* specialisation constants of P3's per-thread pass ... */
     uint32_t coop_width;    /* ... and of its cooperative pass: workgroup size = subgroup size */
     float near_m;
@@ -111,5 +114,22 @@ void pvs_write_descriptors(pvs_context* ctx);
 /* Grows the per-layer buffers to hold `triangles` layer triangles and
  * `layers` layers (contents not preserved), rewriting the descriptors. */
 bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* err, size_t err_size);
+/* Grows the k-buffer pool to `pages` (at most max_pool_pages; contents not
+ * preserved), rewriting the descriptors. */
+bool pvs_reserve_pool(pvs_context* ctx, uint32_t pages, char* err, size_t err_size);
+/* After a computation: where the pool ran out, the result would depend on
+ * which fragments came first, so it grows (twice, or to what P2 asked for if
+ * more) and *again asks the caller to compute again; at max_pool_pages the
+ * lost entries stand, as overflow, and the caller computes once more with
+ * pvs_view_gpu.kb_holes set, so that P3 can tell the slots they left empty
+ * (pvs_kbuffer.glsl). */
+bool pvs_pool_regrow(pvs_context* ctx, bool* again, char* err, size_t err_size);
+/* Records the copy of the pages P2 took in `layer` of tile `t` (after its
+ * P2, before the next layer's reset). */
+void pvs_record_pages_taken(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, uint32_t layer);
+/* After a computation: the k-buffer figures of `st` and its per-layer
+ * statistics (allocated: pool, links and heads; used: the pages of the
+ * fullest layer of one tile and the heads; pages lacking at the cap). */
+void pvs_kbuffer_stats(const pvs_context* ctx, pvs_stats* st);
 
 #endif

@@ -73,8 +73,10 @@ static bool create_raster(pvs_context* ctx, VkShaderModule vert, VkShaderModule 
                           char* err, size_t err_size)
 {
     const VkFormat color_format = PVS_VIS_ID_FORMAT;
+    const VkSpecializationMapEntry entry = {TV_PVS_SPEC_KB_PAGED, 0, sizeof(uint32_t)};
     rnd_raster_desc d = {.vert = vert,
                          .frag = frag,
+                         .frag_spec = &(VkSpecializationInfo){1, &entry, sizeof(uint32_t), &ctx->kb_paged},
                          .layout = ctx->layout,
                          .color_count = 1,
                          .color_formats = &color_format,
@@ -107,9 +109,13 @@ static bool create_rasters(pvs_context* ctx, char* err, size_t err_size)
 
 bool pvs_pipelines_create(pvs_context* ctx, char* err, size_t err_size)
 {
-    const VkSpecializationMapEntry entry = {0, 0, sizeof(uint32_t)};
-    const VkSpecializationInfo coop_min = {1, &entry, sizeof(uint32_t), &ctx->coop_sort_min};
-    const VkSpecializationInfo coop_width = {1, &entry, sizeof(uint32_t), &ctx->coop_width};
+    /* constant 0: the pass's own; TV_PVS_SPEC_KB_PAGED: the k-buffer layout */
+    const VkSpecializationMapEntry entries[2] = {{0, 0, sizeof(uint32_t)},
+                                                 {TV_PVS_SPEC_KB_PAGED, sizeof(uint32_t), sizeof(uint32_t)}};
+    const uint32_t min_data[2] = {ctx->coop_sort_min, ctx->kb_paged};
+    const uint32_t width_data[2] = {ctx->coop_width, ctx->kb_paged};
+    const VkSpecializationInfo coop_min = {2, entries, sizeof min_data, min_data};
+    const VkSpecializationInfo coop_width = {2, entries, sizeof width_data, width_data};
     return create_layouts(ctx, err, err_size) &&
            create_compute(ctx, tv_spv_pvs_classify_comp, sizeof tv_spv_pvs_classify_comp, NULL,
                           &ctx->pipelines[PVS_PIPE_CLASSIFY], err, err_size) &&

@@ -29,9 +29,27 @@ extern "C" {
 
 typedef struct pvs_context pvs_context;
 
+/* Where P2 finds page j of a pixel's list (docs/pvs-gpu-passes.md, "k-buffer
+ * pages"). FLAT: at a fixed place, k slots per list and pixel (no
+ * allocation; the tile is what one buffer holds of those). PAGED: chains of
+ * pages taken from a pool as lists fill (memory follows use; the pool grows
+ * and the computation runs again when it runs out), which costs P2 its
+ * atomics, twice P2's time on lavapipe. */
+typedef enum pvs_kbuffer_layout {
+    PVS_KBUFFER_DEFAULT = 0, /* PAGED on a GPU, FLAT on a CPU device */
+    PVS_KBUFFER_FLAT = 1,
+    PVS_KBUFFER_PAGED = 2,
+} pvs_kbuffer_layout;
+
 typedef struct pvs_desc {
     uint32_t width, height;          /* PVS resolution; 0: 512 x 512 */
     uint32_t k;                      /* k-buffer slots per pixel and kind, 1..TV_K_FRONT; 0: 16 */
+    pvs_kbuffer_layout kbuffer_layout; /* 0: PAGED on a GPU, FLAT on a CPU device */
+    uint32_t kbuffer_pages;          /* PAGED: k-buffer pool's first size, in pages of TV_PVS_PAGE entries (it
+                                        grows when a computation runs out, and the context keeps the
+                                        grown size); 0: 2 per pixel of a tile */
+    uint32_t max_kbuffer_pages;      /* PAGED: most pages the pool grows to; 0: what maxStorageBufferRange
+                                        holds. Past it, entries are lost as overflow (conservative) */
     uint32_t octree_cap;             /* triangles per octree leaf; 0: PVS_OCTREE_DEFAULT_CAP */
     uint32_t octree_depth;           /* 0: PVS_OCTREE_DEFAULT_DEPTH */
     uint32_t max_layers;             /* consecutive octree layers are merged into at most this many
@@ -44,7 +62,8 @@ typedef struct pvs_desc {
                                         thread; 0: 8 (the paper's N) on a GPU, never on a CPU device;
                                         UINT32_MAX: never */
     uint32_t max_tile_pixels;        /* the image is computed in tiles of at most this many pixels
-                                        (pvs/tiles.h; per-pixel memory follows the tile); 0: 512 x 512;
+                                        (pvs/tiles.h; per-pixel memory follows the tile); 0: 1024 x 1024
+                                        (FLAT: 512 x 512);
                                         lowered to what maxStorageBufferRange allows */
     uint32_t max_proxies;            /* most proxies one pvs_compute_dynamic takes; 0: 1024 */
     bool explain;                    /* record which rules output each triangle (pvs_result.reasons);
@@ -74,7 +93,7 @@ typedef struct pvs_layer_stats {
     uint64_t active_pixels;      /* pixels P3 resolved */
     uint64_t sequence_entries;   /* trim-sequence entries at those pixels (P3's sort input) */
     uint64_t overflow_pixels;    /* of those, resolved by the overflow policy */
-    uint64_t kbuffer_bytes_used; /* k-buffer entries read by P3, in bytes */
+    uint64_t kbuffer_bytes_used; /* k-buffer pages P2 took, in bytes (the most of one tile) */
     double ms[3];                /* P1, P2, P3 (spill draws included): GPU timestamps summed over tiles */
 } pvs_layer_stats;
 
@@ -88,8 +107,13 @@ typedef struct pvs_stats {
     uint32_t silhouettes;         /* trim regions emitted over all layers */
     uint64_t active_pixels;       /* active pixels resolved, summed over layers */
     double mean_sequence;         /* mean trim-sequence length (k-buffer entries) per resolve */
-    uint64_t kbuffer_bytes;       /* k-buffers allocated (for one tile) */
-    uint64_t kbuffer_bytes_used;  /* most k-buffer bytes P3 read in one layer, over the whole image */
+    uint64_t kbuffer_bytes;       /* k-buffers allocated: the page pool with its links, and the list
+                                     heads of one tile */
+    uint64_t kbuffer_bytes_used;  /* the pages P2 took in the fullest layer of one tile, and the heads */
+    uint64_t kbuffer_lost;        /* pages P2 asked for past the pool at its largest, in one layer of
+                                     one tile: their entries were lost, as overflow (0: none) */
+    uint32_t kbuffer_regrows;     /* times this computation ran out of pages, grew the pool and
+                                     started again */
     uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */
     uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
     uint64_t coop_pixels;         /* pixel resolves whose sequences a workgroup sorted */
@@ -115,8 +139,9 @@ typedef struct pvs_result {
 /* Builds the viewcell-independent state for `scene` (the same scene `gpu`
  * was uploaded from; neither is referenced for longer than the context
  * lives, and `scene` not after the call). desc may be NULL (all defaults).
- * Fails (NULL, one-line reason in err) on an invalid desc, when a k-buffer
- * exceeds maxStorageBufferRange, or on a Vulkan/memory failure. */
+ * Fails (NULL, one-line reason in err) on an invalid desc, when a per-pixel
+ * buffer of the smallest tile exceeds maxStorageBufferRange, or on a
+ * Vulkan/memory failure. */
 pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu, const pvs_desc* desc,
                         char* err, size_t err_size);
 

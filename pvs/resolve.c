@@ -56,11 +56,6 @@ static seq_entry make_entry(float depth, uint32_t kind, uint32_t id, int32_t del
     return (seq_entry){.depth = depth, .kind = kind, .id = id, .interval = -1, .delta = delta};
 }
 
-static uint32_t min_u32(uint32_t a, uint32_t b)
-{
-    return a < b ? a : b;
-}
-
 /* A candidate front, or a candidate back (the back of a triangle narrower
  * than a pixel: it may cover no pixel centre). */
 static bool is_candidate(const seq_entry* e)
@@ -106,9 +101,9 @@ static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t
         if (s->carry[i].kind == TV_ENTRY_FRONT)
             emit(out, &n, s->carry[i].id);
     }
-    for (uint32_t i = 0; i < min_u32(k->front_count, TV_K_FRONT); i++)
+    for (uint32_t i = 0; i < k->front_held; i++)
         emit(out, &n, k->front_tri[i]);
-    for (uint32_t i = 0; i < min_u32(k->back_count, TV_K_BACK); i++)
+    for (uint32_t i = 0; i < k->back_held; i++)
         emit(out, &n, k->back_tri[i]);
     s->stencil = TV_STENCIL_OVERFLOW;
     s->carry_count = 0;
@@ -121,7 +116,7 @@ static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t
 static bool umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth)
 {
     float nearest = INFINITY;
-    for (uint32_t i = 0; i < min_u32(k->umbra_count, TV_K_UMBRA); i++) {
+    for (uint32_t i = 0; i < k->umbra_held; i++) {
         if (k->umbra_region[i] == region)
             nearest = fminf(nearest, k->umbra_depth[i]);
     }
@@ -146,7 +141,7 @@ static bool has_depth(float d)
  * validated back's depth would terminate the pixel). */
 static bool stored_face(const pvs_kbuf* k, uint32_t kind, float depth)
 {
-    uint32_t n = kind == TV_ENTRY_FRONT ? min_u32(k->front_count, TV_K_FRONT) : min_u32(k->back_count, TV_K_BACK);
+    uint32_t n = kind == TV_ENTRY_FRONT ? k->front_held : k->back_held;
     for (uint32_t i = 0; i < n; i++) {
         if ((kind == TV_ENTRY_FRONT ? k->front_depth[i] : k->back_depth[i]) == depth)
             return true;
@@ -171,11 +166,11 @@ static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, bool first, 
         if (s->carry[i].kind != TV_ENTRY_UMBRA)
             seq[n++] = make_entry(s->carry[i].depth, s->carry[i].kind, s->carry[i].id, 0);
     }
-    for (uint32_t i = 0; i < min_u32(k->front_count, TV_K_FRONT); i++)
+    for (uint32_t i = 0; i < k->front_held; i++)
         seq[n++] = make_entry(k->front_depth[i], TV_ENTRY_FRONT, k->front_tri[i], 0);
-    for (uint32_t i = 0; i < min_u32(k->back_count, TV_K_BACK); i++)
+    for (uint32_t i = 0; i < k->back_held; i++)
         seq[n++] = make_entry(k->back_depth[i], TV_ENTRY_BACK, k->back_tri[i], 0);
-    for (uint32_t i = 0; i < min_u32(k->trim_count, TV_K_TRIM); i++)
+    for (uint32_t i = 0; i < k->trim_held; i++)
         seq[n++] = make_entry(k->trim_depth[i], TV_ENTRY_TRIM, k->trim_region[i], 0);
     sort_entries(seq, n);
     return n;
@@ -526,10 +521,10 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
 static uint32_t resolve_sealed(const pvs_pixel_state* s, const pvs_kbuf* kbuf, uint32_t* out)
 {
     uint32_t n_out = 0;
-    for (uint32_t i = 0; i < kbuf->front_count && i < TV_K_FRONT; i++)
+    for (uint32_t i = 0; i < kbuf->front_held; i++)
         if (pvs_sealed_output(s, kbuf->front_depth[i]))
             emit(out, &n_out, kbuf->front_tri[i]);
-    for (uint32_t i = 0; i < kbuf->back_count && i < TV_K_BACK; i++)
+    for (uint32_t i = 0; i < kbuf->back_held; i++)
         if (pvs_sealed_output(s, kbuf->back_depth[i]))
             emit(out, &n_out, kbuf->back_tri[i]);
     return n_out;
@@ -592,7 +587,7 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
     if (kbuf->front_count <= TV_K_FRONT || state->stencil == TV_STENCIL_UNTRIMMED ||
         !has_depth(kbuf->candidate_lost) || kbuf->candidate_lost >= bound)
         return n;
-    for (uint32_t i = 0; i < TV_K_FRONT; i++) {
+    for (uint32_t i = 0; i < kbuf->front_held; i++) {
         if ((kbuf->front_tri[i] & TV_ID_CANDIDATE) != 0 && kbuf->front_depth[i] < bound)
             emit(out, &n, kbuf->front_tri[i]);
     }

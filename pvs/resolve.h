@@ -8,7 +8,9 @@
  * Contract in short:
  * - Per pixel and layer, four k-buffers (fronts, backs, trims, umbrae) of
  *   TV_K_* entries (shaders/pvs_shared.h) whose counters run past K: a count
- *   above K means the list overflowed. Trims and umbrae carry their
+ *   above K means the list overflowed. P2 stores them in pages of a pool
+ *   (pvs_kpages, as the GPU does); an entry the pool has no page for is lost
+ *   like one past K, and its list reads as overflowed. Trims and umbrae carry their
  *   trim-region id, unique within one PVS computation, which pairs them.
  * - Depths are any value monotonic along the pixel's ray from v*.
  * - pvs_pixel_state persists across layers (zero-initialised = untrimmed):
@@ -34,9 +36,25 @@ extern "C" {
  * candidates may come twice: from the resolve and as spill output). */
 #define PVS_RESOLVE_MAX_OUTPUT (2 * TV_K_FRONT + TV_K_BACK + TV_K_CARRY)
 
-/* The four k-buffers of one pixel for the current layer. */
+/* The pool of k-buffer pages of P2 (shaders/pvs_kbuffer.glsl), which holds
+ * every pixel's lists: a list is a chain of pages of TV_PVS_PAGE slots from
+ * its head, links holding page + 1 (TV_PVS_NO_PAGE: the end). The caller owns
+ * the arrays (page_count pages) and zeroes `taken` before a layer. */
+typedef struct pvs_kpages {
+    uint32_t (*slots)[2]; /* page_count * TV_PVS_PAGE: depth bits (TV_PVS_HOLE: no entry), id */
+    uint32_t* links;      /* page_count: the next page + 1 of the list */
+    uint32_t page_count;
+    uint32_t taken;       /* pages asked for in this layer, past page_count too (the GPU's counter) */
+} pvs_kpages;
+
+/* The four k-buffers of one pixel for the current layer: P2's counters and
+ * list heads, and the entries as pvs_kbuf_read gathers them from the pages
+ * (what pvs_resolve_pixel reads). */
 typedef struct pvs_kbuf {
-    uint32_t front_count, back_count, trim_count, umbra_count; /* may exceed K */
+    uint32_t front_count, back_count, trim_count, umbra_count; /* may exceed K; TV_PVS_COUNT_LOST: pages ran out */
+    uint32_t head[TV_PVS_LISTS]; /* first page + 1 of each list in the pool (0: empty) */
+    /* Entries in the arrays below: min(count, K), fewer when the pool lost some. */
+    uint32_t front_held, back_held, trim_held, umbra_held;
     float front_depth[TV_K_FRONT];
     uint32_t front_tri[TV_K_FRONT];
     float back_depth[TV_K_BACK];
@@ -81,11 +99,17 @@ typedef struct pvs_pixel_state {
 } pvs_pixel_state;
 
 /* P2's insertion of one fragment of `kind` (TV_ENTRY_FRONT, BACK, TRIM or
- * UMBRA) into the pixel's k-buffer: increments the counter, stores the entry
- * when there is room. Returns false when the list was full; for a front the
- * caller must then keep `id` and ask pvs_spill_output after the resolve.
- * Asserts a valid kind. */
-bool pvs_kbuf_push(pvs_kbuf* kbuf, uint32_t kind, float depth, uint32_t id);
+ * UMBRA) into the pixel's k-buffer: increments the counter and, when there
+ * is room, stores the entry in the list's pages, taking a page from `pages`
+ * where the chain ends before the slot. Returns false when the list was full
+ * or the pool had no page left (the counter then gets TV_PVS_COUNT_LOST);
+ * for a front the caller must then keep `id` and ask pvs_spill_output after
+ * the resolve. Asserts a valid kind. */
+bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth, uint32_t id);
+
+/* Gathers the pixel's entries from the pages into kbuf's arrays, as P3 reads
+ * them: the first min(count, K) slots of each list, skipping holes. */
+void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages);
 
 /* Resolves one active pixel after P2 rasterised a layer (depth: any value
  * monotonic in the distance along the pixel's ray from v*). Writes the

@@ -1,7 +1,7 @@
 /* tiles.h - the PVS image split into tiles that each fit the per-pixel
  * buffers.
  *
- * The GPU passes keep per-pixel state (k-buffers, carry, counters) whose size
+ * The GPU passes keep per-pixel state (carry, counters, k-buffer heads) whose size
  * follows the pixel count; at the paper's 1920x1080 it exceeds a storage
  * buffer's range on lavapipe (128 MiB). Every pass is per pixel (nothing
  * reads a neighbour's state), so the image is computed tile by tile, each

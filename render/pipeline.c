@@ -86,7 +86,8 @@ bool rnd_raster_pipeline_create(rnd_context* ctx, const rnd_raster_desc* desc, V
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
          .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
          .module = desc->frag,
-         .pName = "main"},
+         .pName = "main",
+         .pSpecializationInfo = desc->frag_spec},
     };
     VkPipelineVertexInputStateCreateInfo vertex_input = {.sType =
                                                              VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};

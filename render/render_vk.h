@@ -153,6 +153,7 @@ typedef enum rnd_blend {
 } rnd_blend;
 typedef struct rnd_raster_desc {
     VkShaderModule vert, frag;
+    const VkSpecializationInfo* frag_spec; /* the fragment shader's specialisation constants; NULL: none */
     VkPipelineLayout layout;
     uint32_t color_count;              /* colour attachments, at most 2 */
     const VkFormat* color_formats;

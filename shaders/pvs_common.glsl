@@ -20,9 +20,25 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
     float near_dist, delta, focal_px, max_width;
     uint width, height, k, triangle_count; // width, height: the whole image
     uint tile_x, tile_y, tile_w, tile_h;    // the tile being computed (pvs/tiles.h): per-pixel buffers index it
-    uint explain, pad0, pad1, pad2;         // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain)
+    uint explain, kb_holes, pad1, pad2;     // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain); kb_holes: pvs_kbuffer.glsl
     float depth_bound[];                    // pvs/depth_bound.h's cells, all levels (pvs_trim.glsl)
 } view;
+
+// pvs_desc.kbuffer_layout: the only difference between the layouts is how
+// page j of a pixel's list is found. PAGED: through the list's head and the
+// pages' links (pvs_kbuffer.glsl, pvs_follow). FLAT: page j of list l of
+// pixel p is kb_flat_page(p, l) + j, every list holding k slots; no
+// allocation, no heads or links.
+layout(constant_id = TV_PVS_SPEC_KB_PAGED) const bool KB_PAGED = true;
+
+// Page + 1 (as heads and links hold pages) of the first page of list `list`
+// of pixel p in the FLAT layout: each list in a region of its own, pixel by
+// pixel, as the four buffers before the pool had it (a pixel's four lists
+// side by side made P2 some 10 % slower on llvmpipe).
+uint kb_flat_page(uint p, uint list)
+{
+    return (list * view.tile_w * view.tile_h + p) * ((view.k + TV_PVS_PAGE - 1u) / TV_PVS_PAGE) + 1u;
+}
 
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ADJ) readonly buffer pvs_adj_buf { uint adjacency[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LAYER_TRIS) readonly buffer pvs_layer_buf { uint layer_tris[]; };
@@ -30,10 +46,10 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_FF) PVS_RW buffer pvs_ff_
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_BF) PVS_RW buffer pvs_bf_buf { uint bf_list[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_SIL) PVS_RW buffer pvs_sil_buf { vec4 sil[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_COUNTERS) PVS_RW coherent buffer pvs_counter_buf { uint counters[]; };
-layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KFRONT) PVS_RW buffer pvs_kfront_buf { uvec2 kfront[]; };
-layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KBACK) PVS_RW buffer pvs_kback_buf { uvec2 kback[]; };
-layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KTRIM) PVS_RW buffer pvs_ktrim_buf { uvec2 ktrim[]; };
-layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KUMBRA) PVS_RW buffer pvs_kumbra_buf { uvec2 kumbra[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KPOOL) PVS_RW buffer pvs_kpool_buf { uvec2 kpool[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KHEADS) PVS_RW coherent buffer pvs_kheads_buf { uint kheads[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KLINKS) PVS_RW coherent buffer pvs_klinks_buf { uint klinks[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KALLOC) PVS_RW coherent buffer pvs_kalloc_buf { uint kalloc[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_PIXCOUNT) PVS_RW coherent buffer pvs_pixcount_buf { uvec4 pixcount[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_PIXSTATE) PVS_RW buffer pvs_pixstate_buf { uvec4 pixstate[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CARRY) PVS_RW buffer pvs_carry_buf { uvec4 carry_buf[]; };

@@ -1,6 +1,7 @@
 // pvs_kbuffer.glsl - P2's k-buffer insertion (pvs_kbuf_push of
-// pvs/resolve.c): the counter always increments, so a count above k tells P3
-// that the list overflowed; the entry is stored only when there is room.
+// pvs/kbuffer.c): the counter always increments, so a count above k tells P3
+// that the list overflowed; the entry is stored, in a page of the pool, only
+// when there is room.
 #ifndef TV_PVS_KBUFFER_GLSL
 #define TV_PVS_KBUFFER_GLSL
 
@@ -35,7 +36,62 @@ void pvs_mark_active(uint p)
         atomicAdd(counters[TV_PVS_C_DISPATCH], 1u); // one P3 workgroup per TV_WG_SIZE pixels
 }
 
-// Returns false when the list was full (the caller handles a lost front).
+// The page a link leads to (head: pixel p's head of a list at `at`, else the
+// page whose next link it is), taking a fresh page from the pool where the
+// link is missing: the first fragment to install its page with a
+// compare-and-swap wins, a loser's page stays unused, nobody waits.
+// TV_PVS_NO_PAGE when the pool is exhausted. The allocator counts on past
+// the pool's end, so pvs_compute sees from the count (copied after each
+// layer's P2) that the pool was too small; it then grows the pool and
+// computes again. Heads and links are cleared before each layer, so a fresh
+// page needs no store before it is published: llvmpipe runs this branch
+// under a mask for every fragment, so it is kept to two atomics. Only a
+// computation that runs out leaves holes in its lists (in every other, each
+// slot below min(count, k) is written), so fresh pages are cleared only
+// when pvs_compute computes again with a pool that cannot grow
+// (view.kb_holes).
+uint pvs_follow(bool head, uint at)
+{
+    uint link = head ? kheads[at] : klinks[at];
+    if (link != TV_PVS_NO_PAGE)
+        return link;
+    uint fresh = atomicAdd(kalloc[TV_PVS_A_TAKEN], 1u);
+    if (fresh >= uint(klinks.length()))
+        return TV_PVS_NO_PAGE;
+    if (view.kb_holes != 0u) { // a computation that loses entries: the slots that stay empty must read as holes
+        for (uint i = 0u; i < TV_PVS_PAGE; i++)
+            kpool[TV_PVS_PAGE * fresh + i] = uvec2(TV_PVS_HOLE, 0u);
+        memoryBarrierBuffer(); // before another fragment can store into the page
+    }
+    uint won = head ? atomicCompSwap(kheads[at], TV_PVS_NO_PAGE, fresh + 1u)
+                    : atomicCompSwap(klinks[at], TV_PVS_NO_PAGE, fresh + 1u);
+    return won == TV_PVS_NO_PAGE ? fresh + 1u : won;
+}
+
+// Stores entry e in slot `slot` (< k) of list `list` at pixel p, through the
+// list's pages (pvs_kbuf_push in pvs/kbuffer.c; FLAT: slot j of a list's k
+// consecutive slots, its pages). False when the PAGED pool had no
+// page for it: the list's counter then reads as overflowed
+// (TV_PVS_COUNT_LOST) and the caller treats the entry as one past k.
+bool pvs_store(uint p, uint list, uint slot, uvec2 e)
+{
+    if (!KB_PAGED) { // cannot run out
+        kpool[TV_PVS_PAGE * (kb_flat_page(p, list) - 1u) + slot] = e;
+        return true;
+    }
+    uint page = pvs_follow(true, TV_PVS_LISTS * p + list);
+    for (uint i = slot / TV_PVS_PAGE; i > 0u && page != TV_PVS_NO_PAGE; i--)
+        page = pvs_follow(false, page - 1u);
+    if (page == TV_PVS_NO_PAGE) {
+        atomicOr(pixcount[p][list], TV_PVS_COUNT_LOST);
+        return false;
+    }
+    kpool[TV_PVS_PAGE * (page - 1u) + slot % TV_PVS_PAGE] = e;
+    return true;
+}
+
+// Returns false when the list was full or the pool had no page left (the
+// caller handles a lost front; the lost depths make both conservative).
 // Only pixels P3 has work for become active: a still untrimmed pixel
 // without trim fragments resolves to nothing (pvs_resolve_pixel's early
 // return), so faces and umbrae activate it only once it is trimmed; the
@@ -44,34 +100,28 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
 {
     if (kind == TV_PVS_KIND_TRIM || pixstate[p].x != TV_STENCIL_UNTRIMMED)
         pvs_mark_active(p);
-    uint slot;
     uint d = floatBitsToUint(depth);
+    uvec2 e = uvec2(d, id);
     if (kind == TV_PVS_KIND_FRONT) {
-        slot = atomicAdd(pixcount[p].x, 1u);
-        if (slot >= view.k) {
+        uint slot = atomicAdd(pixcount[p].x, 1u);
+        if (slot >= view.k || !pvs_store(p, 0u, slot, e)) {
             atomicMin(lost[TV_PVS_LOST_STRIDE * p + ((id & TV_ID_CANDIDATE) != 0u ? TV_PVS_LOST_CANDIDATE : TV_PVS_LOST_FRONT)], d);
             return false;
         }
-        kfront[p * view.k + slot] = uvec2(d, id);
     } else if (kind == TV_PVS_KIND_BACK) {
         if ((id & TV_ID_CANDIDATE) != 0u && pixcount[p].y >= view.k / 2u)
             return false; // pvs_kbuf_push: half the list stays for real backs
-        slot = atomicAdd(pixcount[p].y, 1u);
-        if (slot >= view.k)
-            return false;
-        kback[p * view.k + slot] = uvec2(d, id);
+        uint slot = atomicAdd(pixcount[p].y, 1u);
+        return slot < view.k && pvs_store(p, 1u, slot, e);
     } else if (kind == TV_PVS_KIND_TRIM) {
-        slot = atomicAdd(pixcount[p].z, 1u);
-        if (slot >= view.k) {
+        uint slot = atomicAdd(pixcount[p].z, 1u);
+        if (slot >= view.k || !pvs_store(p, 2u, slot, e)) {
             atomicMin(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_TRIM], d);
             return false;
         }
-        ktrim[p * view.k + slot] = uvec2(d, id);
     } else {
-        slot = atomicAdd(pixcount[p].w, 1u);
-        if (slot >= view.k)
-            return false;
-        kumbra[p * view.k + slot] = uvec2(d, id);
+        uint slot = atomicAdd(pixcount[p].w, 1u);
+        return slot < view.k && pvs_store(p, 3u, slot, e);
     }
     return true;
 }

@@ -3,7 +3,9 @@
 // sort) and pvs_resolve_group.comp (one workgroup per pixel whose sequence
 // is long, bitonic sort). It mirrors pvs_resolve_pixel in pvs/resolve.c
 // function by function (same names, same order, same tie-breaks); the only
-// difference is the runtime capacity view.k in place of the TV_K_* bounds.
+// difference is the runtime capacity view.k in place of the TV_K_* bounds,
+// and that the k-buffers are read through their pages (kb_next) where the C
+// reference has arrays (pvs_kbuf_read).
 // Output ids set their flag in tri_flags.
 //
 // The includer defines TV_RESOLVE_STORAGE (empty or `shared`), S2 and
@@ -25,8 +27,8 @@ struct seq_entry {
     int delta;
 };
 
-// The pixel: state, counters, k-buffer base.
-uint P, KB;
+// The pixel: state, counters.
+uint P;
 uvec4 cnt;
 uint stencil, carry_count;
 float hide_begin, hide_end;
@@ -114,6 +116,31 @@ bool is_straddled(seq_entry e)
 
 float kdepth(uint bits) { return uintBitsToFloat(bits); }
 
+// A walk over list `list` of the pixel (TV_PVS_LISTS order) through its
+// pages: its first min(count, k) slots, skipping holes (entries the pool
+// had no page for; their chain may also end early).
+struct kb_cursor {
+    uint page, slot, end;
+};
+
+kb_cursor kb_open(uint list)
+{
+    return kb_cursor(KB_PAGED ? kheads[TV_PVS_LISTS * P + list] : kb_flat_page(P, list), 0u, min(cnt[list], view.k));
+}
+
+bool kb_next(inout kb_cursor c, out uvec2 e)
+{
+    e = uvec2(0u);
+    while (c.slot < c.end && c.page != TV_PVS_NO_PAGE) {
+        e = kpool[TV_PVS_PAGE * (c.page - 1u) + c.slot % TV_PVS_PAGE];
+        if (++c.slot % TV_PVS_PAGE == 0u)
+            c.page = KB_PAGED ? klinks[c.page - 1u] : c.page + 1u;
+        if (e.x != TV_PVS_HOLE)
+            return true;
+    }
+    return false;
+}
+
 // The overflow policy: every front this pixel knows of is output and the
 // pixel can no longer be sealed.
 void resolve_overflow()
@@ -122,10 +149,11 @@ void resolve_overflow()
     for (uint i = 0u; i < carry_count; i++)
         if (carry[i].kind == TV_ENTRY_FRONT)
             output_id(carry[i].id);
-    for (uint i = 0u; i < min(cnt.x, view.k); i++)
-        output_id(kfront[KB + i].y);
-    for (uint i = 0u; i < min(cnt.y, view.k); i++)
-        output_id(kback[KB + i].y);
+    uvec2 e;
+    for (kb_cursor c = kb_open(0u); kb_next(c, e);)
+        output_id(e.y);
+    for (kb_cursor c = kb_open(1u); kb_next(c, e);)
+        output_id(e.y);
     stencil = TV_STENCIL_OVERFLOW;
     carry_count = 0u;
     hide_begin = hide_end = 0.0;
@@ -135,8 +163,8 @@ bool umbra_depth(uint region, inout float depth)
 {
     const float inf = uintBitsToFloat(0x7F800000u);
     float nearest = inf;
-    for (uint i = 0u; i < min(cnt.w, view.k); i++) {
-        uvec2 u = kumbra[KB + i];
+    uvec2 u;
+    for (kb_cursor c = kb_open(3u); kb_next(c, u);) {
         if (u.y == region)
             nearest = min(nearest, kdepth(u.x));
     }
@@ -152,9 +180,9 @@ bool umbra_depth(uint region, inout float depth)
 
 bool stored_face(uint kind, uint depth_bits)
 {
-    uint n = min(kind == TV_ENTRY_FRONT ? cnt.x : cnt.y, view.k);
-    for (uint i = 0u; i < n; i++)
-        if ((kind == TV_ENTRY_FRONT ? kfront[KB + i].x : kback[KB + i].x) == depth_bits)
+    uvec2 e;
+    for (kb_cursor c = kb_open(kind == TV_ENTRY_FRONT ? 0u : 1u); kb_next(c, e);)
+        if (e.x == depth_bits)
             return true;
     return false;
 }
@@ -177,12 +205,11 @@ uint gather(bool first)
     for (uint i = 0u; i < carry_count; i++)
         if (carry[i].kind != TV_ENTRY_UMBRA)
             ent[n++] = make_entry(carry[i].depth, carry[i].kind, carry[i].id, 0);
-    for (uint i = 0u; i < min(cnt.x, view.k); i++)
-        ent[n++] = make_entry(kdepth(kfront[KB + i].x), TV_ENTRY_FRONT, kfront[KB + i].y, 0);
-    for (uint i = 0u; i < min(cnt.y, view.k); i++)
-        ent[n++] = make_entry(kdepth(kback[KB + i].x), TV_ENTRY_BACK, kback[KB + i].y, 0);
-    for (uint i = 0u; i < min(cnt.z, view.k); i++)
-        ent[n++] = make_entry(kdepth(ktrim[KB + i].x), TV_ENTRY_TRIM, ktrim[KB + i].y, 0);
+    const uint kinds[3] = uint[3](TV_ENTRY_FRONT, TV_ENTRY_BACK, TV_ENTRY_TRIM); // lists 0, 1, 2
+    uvec2 e;
+    for (uint l = 0u; l < 3u; l++)
+        for (kb_cursor c = kb_open(l); kb_next(c, e);)
+            ent[n++] = make_entry(kdepth(e.x), kinds[l], e.y, 0);
     return n;
 }
 
@@ -518,8 +545,8 @@ void request_spill()
         return;
     counters[TV_PVS_C_DRAW_SPILL_WIDE] = 3u * spill_list[0];
     out_reason = TV_REASON_OVERFLOW; // what the dilated spill draw would have output
-    for (uint i = 0u; i < view.k; i++) {
-        uvec2 e = kfront[KB + i];
+    uvec2 e;
+    for (kb_cursor c = kb_open(0u); kb_next(c, e);) {
         if ((e.y & TV_ID_CANDIDATE) != 0u && kdepth(e.x) < bound)
             output_id(e.y);
     }
@@ -530,7 +557,6 @@ void request_spill()
 void load_pixel(uint pixel)
 {
     P = pixel;
-    KB = P * view.k;
     cnt = pixcount[P];
     uvec4 st = pixstate[P];
     stencil = st.x;
@@ -557,8 +583,10 @@ void finish_pixel(uint seq_len, bool handled)
                         floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
     for (uint c = 0u; c < carry_count; c++)
         carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
-    uvec4 stored = min(cnt, uvec4(view.k));
-    atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w)); // bytes
+    if (!KB_PAGED) { // the bytes read: FLAT's kbuffer_bytes_used (PAGED counts the pages taken)
+        uvec4 stored = min(cnt, uvec4(view.k));
+        atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w));
+    }
     atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].y, 1u);
     atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].z, seq_len);
     if (overflowed)

@@ -19,6 +19,21 @@
 #define TV_K_TRIM  32
 #define TV_K_UMBRA 32
 #define TV_K_CARRY 16 /* entries one pixel carries from a layer to the next */
+/* The four lists of every pixel live in one pool of pages per tile, taken as
+ * P2 fills them (docs/trim-regions.md, "k-buffer layout"): a list is a chain
+ * of pages of TV_PVS_PAGE entries from its head. Heads and links hold
+ * page + 1, so that 0 (TV_PVS_NO_PAGE) is the end of a chain. */
+#define TV_PVS_PAGE 4u
+#define TV_PVS_LISTS 4u       /* front, back, trim, umbra: the order of a pixel's counters and heads */
+#define TV_PVS_NO_PAGE 0u
+#define TV_PVS_HOLE 0xFFFFFFFFu /* depth bits of a slot of a taken page that holds no entry */
+/* Set on a list's counter when the pool had no page for one of its entries:
+ * the counter then reads as over k (overflowed), and the entry is lost as one
+ * past k is. */
+#define TV_PVS_COUNT_LOST 0x80000000u
+/* Specialisation constant of P2's fragment shaders and P3 (pvs_common.glsl,
+ * KB_PAGED): 1 for pvs_desc.kbuffer_layout PAGED, 0 for FLAT. */
+#define TV_PVS_SPEC_KB_PAGED 1
 /* Most workgroups of P3's cooperative pass (Vulkan's minimum of
  * maxComputeWorkGroupCount[0]); each loops over the deferred pixels. */
 #define TV_PVS_MAX_COOP_GROUPS 65535u
@@ -186,10 +201,12 @@
 #define TV_PVS_BIND_BF         4  // P1 -> P2: back-facing triangle ids of the layer
 #define TV_PVS_BIND_SIL        5  // P1 -> P2: TV_PVS_SIL_VEC4 vec4 per silhouette edge
 #define TV_PVS_BIND_COUNTERS   6  // indirect commands and counters (TV_PVS_C_*)
-#define TV_PVS_BIND_KFRONT     7  // k-buffer: uvec2 (depth bits, triangle) per slot
-#define TV_PVS_BIND_KBACK      8  // k-buffer: depth bits per slot
-#define TV_PVS_BIND_KTRIM      9  // k-buffer: uvec2 (depth bits, region) per slot
-#define TV_PVS_BIND_KUMBRA     10 // k-buffer: uvec2 (depth bits, region) per slot
+#define TV_PVS_BIND_KPOOL      7  // k-buffer pages: TV_PVS_PAGE uvec2 (depth bits, triangle or region id) each
+#define TV_PVS_BIND_KHEADS     8  // uint x TV_PVS_LISTS per pixel: first page + 1 of each list (0: empty), reset every layer
+#define TV_PVS_BIND_KLINKS     9  // uint per page: the next page + 1 of its list (0: none), reset every layer
+#define TV_PVS_BIND_KALLOC     10 // uint: pages taken in this layer (the pool's next free page, reset every layer), then per tile and layer a copy of it after P2
+#define TV_PVS_A_TAKEN  0u
+#define TV_PVS_A_LAYERS 1u // slot of tile 0's layer 0 in TV_PVS_BIND_KALLOC
 #define TV_PVS_BIND_PIXCOUNT   11 // uvec4 per pixel: front, back, trim, umbra counters
 #define TV_PVS_BIND_PIXSTATE   12 // uvec4 per pixel: stencil, carry count (sealed: terminator depth bits), hide begin/end bits
 #define TV_PVS_BIND_CARRY      13 // uvec4 (depth bits, kind, id, 0) x TV_K_CARRY per pixel
@@ -197,7 +214,7 @@
 #define TV_PVS_BIND_ACTIVE_LIST 15 // pixel indices activated in this layer
 #define TV_PVS_BIND_TRI_FLAGS  16 // uint per triangle: 1 = in the PVS
 #define TV_PVS_BIND_VIS_IDS    17 // r32ui storage image: the visibility buffer's ids
-#define TV_PVS_BIND_LAYER_STATS 18 // TV_PVS_LAYER_STATS_STRIDE uvec4 per layer: P3's (bytes stored, active pixels, sequence sum, overflows), P1's (vertex counts of the FF, BF and trim draws, 0)
+#define TV_PVS_BIND_LAYER_STATS 18 // TV_PVS_LAYER_STATS_STRIDE uvec4 per layer: (0, then P3's active pixels, sequence sum, overflows), P1's (vertex counts of the FF, BF and trim draws, 0)
 #define TV_PVS_LAYER_STATS_STRIDE 2
 #define TV_PVS_BIND_VIS_WIDE   19 // r32ui storage image: ids of the dilated pass
 #define TV_PVS_BIND_CENTRE_DEPTH 20 // TV_PVS_CENTRE_STRIDE uints per pixel: nearest depth bits of the faces covering its centre

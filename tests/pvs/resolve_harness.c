@@ -1,25 +1,36 @@
 #include "resolve_harness.h"
 
+#include <assert.h>
 #include <string.h>
+
+uint32_t harness_pages = HARNESS_MAX_PAGES;
 
 /* prior_front / prior_back: P2's nearest front / back depth at the pixel
  * centre over this and the earlier layers (0: none). */
 layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_back, const item* items,
                                     uint32_t n)
 {
+    static uint32_t slots[HARNESS_MAX_PAGES * TV_PVS_PAGE][2], links[HARNESS_MAX_PAGES];
+    assert(harness_pages <= HARNESS_MAX_PAGES);
+    pvs_kpages pages = {slots, links, harness_pages, 0};
     pvs_kbuf k;
     memset(&k, 0, sizeof k);
     k.nearest_front = prior_front;
     k.nearest_back = prior_back;
     layer_result r = {0};
     for (uint32_t i = 0; i < n; i++) {
-        if (!pvs_kbuf_push(&k, items[i].kind, items[i].depth, items[i].id) && items[i].kind == TV_ENTRY_FRONT)
+        if (!pvs_kbuf_push(&k, &pages, items[i].kind, items[i].depth, items[i].id) && items[i].kind == TV_ENTRY_FRONT)
             r.spilled[r.spilled_count++] = items[i].id;
     }
+    r.pages_taken = pages.taken;
+    pvs_kbuf_read(&k, &pages);
     r.count = pvs_resolve_pixel(s, &k, r.out, &r.overflowed);
     for (uint32_t i = 0, j = 0; i < n; i++) {
-        if (j < r.spilled_count && items[i].kind == TV_ENTRY_FRONT && items[i].id == r.spilled[j])
-            r.spill_out += pvs_spill_output(s, items[i].id, items[i].depth), j++;
+        if (j < r.spilled_count && items[i].kind == TV_ENTRY_FRONT && items[i].id == r.spilled[j]) {
+            if (pvs_spill_output(s, items[i].id, items[i].depth))
+                r.spill_ids[r.spill_out++] = items[i].id & ~TV_ID_CANDIDATE;
+            j++;
+        }
     }
     return r;
 }

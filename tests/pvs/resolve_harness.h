@@ -29,9 +29,16 @@ typedef struct layer_result {
     uint32_t count;
     uint32_t spilled[64]; /* fronts P2 could not store */
     uint32_t spilled_count;
-    uint32_t spill_out; /* how many of them pvs_spill_output adds to the PVS */
+    uint32_t spill_out; /* how many of them pvs_spill_output adds to the PVS ... */
+    uint32_t spill_ids[64]; /* ... and their ids */
+    uint32_t pages_taken;   /* k-buffer pages asked for */
     bool overflowed;
 } layer_result;
+
+/* Pages of the k-buffer pool each run_layer* gets (at most
+ * HARNESS_MAX_PAGES, which holds every list of one pixel at K). */
+#define HARNESS_MAX_PAGES (TV_PVS_LISTS * TV_K_FRONT / TV_PVS_PAGE)
+extern uint32_t harness_pages;
 
 
 /* One layer: pushes `items` into a k-buffer as P2 would (prior_front /

@@ -9,7 +9,14 @@
  * pvs_resolve_pixel. Each pixel outputs ids from its
  * own range, so a wrong id cannot hide behind another pixel's. Run once with
  * every sequence sorted per thread and once with every sequence of two or
- * more entries sorted by a workgroup (the hybrid sort's two passes). */
+ * more entries sorted by a workgroup (the hybrid sort's two passes). The
+ * lists are written into the GPU's page pool by pvs_kbuf_push (the C
+ * reference of P2's layout), which is starved at some pixels (chains cut
+ * short, counters marked lost), and a few stored slots are punched into
+ * holes; both sides read them back through the pages. Run in both k-buffer
+ * layouts: for the flat one the C pool's chains are laid out in advance
+ * where the GPU's flat addressing finds them (kb_flat_page), so the C
+ * reference's paged addressing stands for both. */
 #include "gpu_internal.h"
 #include "render_fixture.h"
 #include "resolve.h"
@@ -24,10 +31,6 @@
 #define PIXELS (SIDE * SIDE)
 #define IDS_PER_PIXEL 8u /* triangle ids of pixel p: [p * 8, p * 8 + 8) */
 #define K TV_K_FRONT     /* the reference's capacity, so both truncate alike */
-
-typedef struct slot2 {
-    uint32_t depth_bits, id;
-} slot2; /* one k-buffer slot (uvec2) */
 
 static rnd_context* g_rnd;
 static uint32_t g_seed = 12345u;
@@ -62,6 +65,42 @@ typedef struct case_data {
     pvs_kbuf kbuf[PIXELS];
     pvs_pixel_state state[PIXELS];
 } case_data;
+
+/* P2's pushes of the random lists of `raw` into `pages`, from `heads` (NULL:
+ * empty lists; the entries past K
+ * are lost as P2 loses them; the lost depths follow), with a pool that has
+ * no page, or one, left at one pixel in eight; then one stored slot in
+ * sixteen becomes a hole. kb gets the counters, heads and lost depths;
+ * pvs_kbuf_read fills its arrays as P3 reads them. */
+static void store_pixel(const pvs_kbuf* raw, pvs_kpages* pages, const uint32_t heads[TV_PVS_LISTS], pvs_kbuf* kb)
+{
+    *kb = (pvs_kbuf){.nearest_front = raw->nearest_front, .nearest_back = raw->nearest_back,
+                     .nearest_culled_back = raw->nearest_culled_back, .front_lost = raw->front_lost,
+                     .candidate_lost = raw->candidate_lost, .trim_lost = raw->trim_lost};
+    if (heads)
+        memcpy(kb->head, heads, sizeof kb->head);
+    uint32_t room = pages->page_count;
+    if (rnd_u(8) == 0)
+        pages->page_count = pages->taken + rnd_u(2);
+    for (uint32_t i = 0; i < raw->front_count; i++)
+        pvs_kbuf_push(kb, pages, TV_ENTRY_FRONT, raw->front_depth[i % K], raw->front_tri[i % K]);
+    for (uint32_t i = 0; i < raw->back_count; i++)
+        pvs_kbuf_push(kb, pages, TV_ENTRY_BACK, raw->back_depth[i % K], raw->back_tri[i % K]);
+    for (uint32_t i = 0; i < raw->trim_count; i++)
+        pvs_kbuf_push(kb, pages, TV_ENTRY_TRIM, raw->trim_depth[i % K], raw->trim_region[i % K]);
+    for (uint32_t i = 0; i < raw->umbra_count; i++)
+        pvs_kbuf_push(kb, pages, TV_ENTRY_UMBRA, raw->umbra_depth[i % K], raw->umbra_region[i % K]);
+    pages->taken = pages->taken < pages->page_count ? pages->taken : pages->page_count;
+    pages->page_count = room;
+    uint32_t* counts[TV_PVS_LISTS] = {&kb->front_count, &kb->back_count, &kb->trim_count, &kb->umbra_count};
+    for (uint32_t l = 0; l < TV_PVS_LISTS; l++) {
+        if (kb->head[l] == TV_PVS_NO_PAGE || rnd_u(16) != 0)
+            continue;
+        pages->slots[TV_PVS_PAGE * (kb->head[l] - 1) + rnd_u(TV_PVS_PAGE)][0] = TV_PVS_HOLE;
+        *counts[l] |= TV_PVS_COUNT_LOST; /* as P2 marks a list that lost an entry */
+    }
+    pvs_kbuf_read(kb, pages);
+}
 
 static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
 {
@@ -137,8 +176,7 @@ static uint32_t fbits(float f)
 /* Host-visible copies of the buffers this test writes or reads. */
 static bool make_host_visible(pvs_context* ctx)
 {
-    const uint32_t bindings[] = {TV_PVS_BIND_KFRONT, TV_PVS_BIND_KBACK, TV_PVS_BIND_KTRIM,
-                                 TV_PVS_BIND_KUMBRA, TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE,
+    const uint32_t bindings[] = {TV_PVS_BIND_KPOOL, TV_PVS_BIND_KHEADS, TV_PVS_BIND_KLINKS, TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE,
                                  TV_PVS_BIND_CARRY, TV_PVS_BIND_ACTIVE_LIST, TV_PVS_BIND_CENTRE_DEPTH,
                                  TV_PVS_BIND_LOST, TV_PVS_BIND_ACTIVE};
     char err[256];
@@ -159,10 +197,7 @@ static bool make_host_visible(pvs_context* ctx)
 static void upload(pvs_context* ctx, const case_data* c)
 {
     uint32_t k = ctx->k;
-    slot2* kf = ctx->buffers[TV_PVS_BIND_KFRONT].mapped;
-    slot2* kbk = ctx->buffers[TV_PVS_BIND_KBACK].mapped;
-    slot2* kt = ctx->buffers[TV_PVS_BIND_KTRIM].mapped;
-    slot2* ku = ctx->buffers[TV_PVS_BIND_KUMBRA].mapped;
+    uint32_t* heads = ctx->buffers[TV_PVS_BIND_KHEADS].mapped;
     uint32_t* cnt = ctx->buffers[TV_PVS_BIND_PIXCOUNT].mapped;
     uint32_t* ps = ctx->buffers[TV_PVS_BIND_PIXSTATE].mapped;
     uint32_t* carry = ctx->buffers[TV_PVS_BIND_CARRY].mapped;
@@ -172,12 +207,8 @@ static void upload(pvs_context* ctx, const case_data* c)
     for (uint32_t p = 0; p < PIXELS; p++) {
         const pvs_kbuf* kb = &c->kbuf[p];
         const pvs_pixel_state* st = &c->state[p];
-        for (uint32_t i = 0; i < k; i++) {
-            kf[p * k + i] = (slot2){fbits(kb->front_depth[i]), kb->front_tri[i]};
-            kbk[p * k + i] = (slot2){fbits(kb->back_depth[i]), kb->back_tri[i]};
-            kt[p * k + i] = (slot2){fbits(kb->trim_depth[i]), kb->trim_region[i]};
-            ku[p * k + i] = (slot2){fbits(kb->umbra_depth[i]), kb->umbra_region[i]};
-        }
+        if (ctx->kb_paged) /* flat: no heads */
+            memcpy(heads + TV_PVS_LISTS * p, kb->head, sizeof kb->head);
         uint32_t counts[4] = {kb->front_count, kb->back_count, kb->trim_count, kb->umbra_count};
         memcpy(cnt + 4 * p, counts, sizeof counts);
         uint32_t state[4] = {st->stencil, st->stencil == TV_STENCIL_SEALED ? fbits(st->term_depth) : st->carry_count,
@@ -270,7 +301,23 @@ static uint32_t compare(pvs_context* ctx, case_data* c)
     return bad;
 }
 
-static void check(uint32_t coop_sort_min, const char* what)
+/* The flat layout as a paged one: every list a chain of K / TV_PVS_PAGE
+ * pages from kb_flat_page (pvs_common.glsl), its slots holes until written;
+ * `links` gets the chains, the pool the holes. */
+static void lay_out_flat(pvs_kpages* pages, uint32_t heads[PIXELS][TV_PVS_LISTS])
+{
+    const uint32_t per_list = (K + TV_PVS_PAGE - 1) / TV_PVS_PAGE;
+    memset(pages->slots, 0xFF, sizeof pages->slots[0] * TV_PVS_PAGE * pages->page_count);
+    for (uint32_t p = 0; p < PIXELS; p++)
+        for (uint32_t l = 0; l < TV_PVS_LISTS; l++) {
+            uint32_t first = (l * PIXELS + p) * per_list;
+            heads[p][l] = first + 1;
+            for (uint32_t j = 0; j < per_list; j++)
+                pages->links[first + j] = j + 1 < per_list ? first + j + 2 : TV_PVS_NO_PAGE;
+        }
+}
+
+static void check(uint32_t coop_sort_min, pvs_kbuffer_layout layout, const char* what)
 {
     scn_scene scene = {0};
     char err[512];
@@ -280,23 +327,40 @@ static void check(uint32_t coop_sort_min, const char* what)
     rnd_gpu_scene* gpu = rnd_scene_create(g_rnd, &scene, err, sizeof err);
     pvs_context* ctx = gpu ? pvs_create(g_rnd, &scene, gpu,
                                         &(pvs_desc){.width = SIDE, .height = SIDE, .k = K,
-                                                    .coop_sort_min = coop_sort_min},
+                                                    .coop_sort_min = coop_sort_min, .kbuffer_layout = layout,
+                                                    .kbuffer_pages = PIXELS * TV_PVS_LISTS * K / TV_PVS_PAGE},
                                         err, sizeof err)
                            : NULL;
     case_data* c = malloc(sizeof *c);
-    TV_CHECK(ctx && c && make_host_visible(ctx));
-    if (ctx && c) {
-        for (uint32_t p = 0; p < PIXELS; p++)
-            make_pixel(p, &c->kbuf[p], &c->state[p]);
+    uint32_t(*heads)[TV_PVS_LISTS] = malloc(sizeof *heads * PIXELS);
+    uint32_t* flat_links = ctx ? malloc(sizeof *flat_links * ctx->pool_pages) : NULL;
+    TV_CHECK(ctx && c && heads && flat_links && make_host_visible(ctx));
+    if (ctx && c && heads && flat_links) {
+        bool flat = layout == PVS_KBUFFER_FLAT;
+        TV_CHECK(ctx->kb_paged == !flat && ctx->pool_pages == PIXELS * TV_PVS_LISTS * K / TV_PVS_PAGE);
+        pvs_kpages pages = {ctx->buffers[TV_PVS_BIND_KPOOL].mapped,
+                            flat ? flat_links : ctx->buffers[TV_PVS_BIND_KLINKS].mapped, ctx->pool_pages, 0};
+        if (flat)
+            lay_out_flat(&pages, heads);
+        uint32_t lost = 0;
+        for (uint32_t p = 0; p < PIXELS; p++) {
+            pvs_kbuf raw;
+            make_pixel(p, &raw, &c->state[p]);
+            store_pixel(&raw, &pages, flat ? heads[p] : NULL, &c->kbuf[p]);
+            lost += (c->kbuf[p].front_count | c->kbuf[p].trim_count) >= TV_PVS_COUNT_LOST;
+        }
+        TV_CHECK(lost > PIXELS / 32 && pages.taken < ctx->pool_pages && (!flat || pages.taken == 0));
         upload(ctx, c);
         TV_CHECK(run_p3(ctx));
         uint32_t coop = ((const uint32_t*)ctx->buffers[TV_PVS_BIND_COUNTERS].mapped)[TV_PVS_C_COOP_TOTAL];
         uint32_t bad = compare(ctx, c);
-        printf("  %s: %u of %u pixels differ from pvs_resolve_pixel (%u sorted by a workgroup)\n", what, bad,
-               PIXELS, coop);
+        printf("  %s, %s: %u of %u pixels differ from pvs_resolve_pixel (%u sorted by a workgroup)\n", what,
+               flat ? "flat" : "paged", bad, PIXELS, coop);
         TV_CHECK(bad == 0);
         TV_CHECK(coop_sort_min == UINT32_MAX ? coop == 0 : coop > PIXELS / 4);
     }
+    free(flat_links);
+    free(heads);
     free(c);
     pvs_destroy(ctx);
     rnd_scene_destroy(g_rnd, gpu);
@@ -305,12 +369,14 @@ static void check(uint32_t coop_sort_min, const char* what)
 
 static void test_per_thread(void)
 {
-    check(UINT32_MAX, "per thread");
+    check(UINT32_MAX, PVS_KBUFFER_PAGED, "per thread");
+    check(UINT32_MAX, PVS_KBUFFER_FLAT, "per thread");
 }
 
 static void test_workgroups(void)
 {
-    check(2, "workgroups");
+    check(2, PVS_KBUFFER_PAGED, "workgroups");
+    check(2, PVS_KBUFFER_FLAT, "workgroups");
 }
 
 int main(void)

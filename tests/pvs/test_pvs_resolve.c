@@ -49,13 +49,17 @@ static void test_candidate_backs(void)
     TV_CHECK(open.stencil == TV_STENCIL_TRIMMED);
     /* they take at most half the back list, so real backs keep the rest */
     pvs_kbuf k = {0};
+    uint32_t slots[TV_K_BACK][2], links[TV_K_BACK / TV_PVS_PAGE];
+    pvs_kpages pages = {slots, links, TV_K_BACK / TV_PVS_PAGE, 0};
     uint32_t stored = 0;
     for (uint32_t i = 0; i < TV_K_BACK; i++)
-        stored += pvs_kbuf_push(&k, TV_ENTRY_BACK, 1.0f + (float)i, i | TV_ID_CANDIDATE);
+        stored += pvs_kbuf_push(&k, &pages, TV_ENTRY_BACK, 1.0f + (float)i, i | TV_ID_CANDIDATE);
     TV_CHECK(stored == TV_K_BACK / 2 && k.back_count == TV_K_BACK / 2);
     for (uint32_t i = 0; i < TV_K_BACK / 2; i++)
-        TV_CHECK(pvs_kbuf_push(&k, TV_ENTRY_BACK, 50.0f + (float)i, 100 + i));
-    TV_CHECK(!pvs_kbuf_push(&k, TV_ENTRY_BACK, 99.0f, 200));
+        TV_CHECK(pvs_kbuf_push(&k, &pages, TV_ENTRY_BACK, 50.0f + (float)i, 100 + i));
+    TV_CHECK(!pvs_kbuf_push(&k, &pages, TV_ENTRY_BACK, 99.0f, 200));
+    pvs_kbuf_read(&k, &pages);
+    TV_CHECK(k.back_held == TV_K_BACK && k.back_depth[TV_K_BACK / 2] == 50.0f && pages.taken == TV_K_BACK / TV_PVS_PAGE);
 }
 
 /* R1: f1 t1 b1 validated (u1 at 3) -> f1 out; f2 lies inside u1, but its

@@ -1,9 +1,11 @@
 /* Trim-sequence resolve (P3 reference) when lists overflow: every front is
  * kept, fronts behind the terminator, full umbra, trim and back lists, prior
- * faces, and a carry that does not fit. */
+ * faces, a carry that does not fit, and a k-buffer page pool that runs
+ * out. */
 #include "resolve_harness.h"
 #include "test.h"
 
+#include <stdio.h>
 #include <string.h>
 
 static void test_overflow_keeps_every_front(void)
@@ -237,6 +239,54 @@ static void test_carry_overflow(void)
     TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW && s.carry_count == 0);
 }
 
+/* The ids two layers output, the spill draws' included, as a bit set over
+ * ids below 64 (BACK_ID as bit 63). */
+static uint64_t two_layers(const item* a, uint32_t na, const item* b, uint32_t nb, uint32_t pages, bool* lost)
+{
+    pvs_pixel_state s = {0};
+    uint64_t ids = 0;
+    *lost = false;
+    for (int l = 0; l < 2; l++) {
+        harness_pages = l == 0 ? pages : HARNESS_MAX_PAGES;
+        layer_result r = l == 0 ? run_layer(&s, a, na) : run_layer(&s, b, nb);
+        for (uint32_t i = 0; i < r.count; i++)
+            ids |= 1ull << (r.out[i] == BACK_ID ? 63 : r.out[i]);
+        for (uint32_t i = 0; i < r.spill_out; i++)
+            ids |= 1ull << r.spill_ids[i];
+        /* a layer that ran out of pages must read as overflowed */
+        TV_CHECK(r.pages_taken <= harness_pages || r.overflowed);
+        *lost |= r.pages_taken > harness_pages;
+    }
+    harness_pages = HARNESS_MAX_PAGES;
+    return ids;
+}
+
+/* Every pool size from none to enough: what the pool cannot hold is lost
+ * as an entry past k is, so the output only grows (never a lost triangle),
+ * and with room for every page it is the output of a pool that never ran
+ * out. Two boxes behind a wall seen past its edge, candidates, more trims
+ * and fronts than one page holds, then a second layer behind them. */
+static void test_pool_exhaustion(void)
+{
+    const item a[] = {F(1.0f, 1), C(1.1f, 2), T(1.2f, 1), T(1.3f, 2), B(1.5f), U(9.0f, 1), U(4.0f, 2),
+                      F(2.0f, 3), T(2.1f, 3), B(2.5f), U(8.0f, 3), F(3.0f, 4), C(3.2f, 5), B(3.5f),
+                      F(5.0f, 6), T(5.5f, 4), B(6.0f), U(7.0f, 4), F(6.5f, 7), B(7.5f), C(12.0f, 8)};
+    const item b[] = {F(4.0f, 9), B(4.5f), F(10.0f, 10), B(11.0f), C(0.5f, 11)};
+    const uint32_t na = sizeof a / sizeof a[0], nb = sizeof b / sizeof b[0];
+    bool lost;
+    uint64_t full = two_layers(a, na, b, nb, HARNESS_MAX_PAGES, &lost);
+    TV_CHECK(!lost && full != 0);
+    uint32_t lossy = 0;
+    for (uint32_t pages = 0; pages <= 12; pages++) {
+        uint64_t got = two_layers(a, na, b, nb, pages, &lost);
+        if ((full & ~got) != 0)
+            printf("  pool of %u pages: ids 0x%llx missing\n", pages, (unsigned long long)(full & ~got));
+        TV_CHECK((full & ~got) == 0);
+        TV_CHECK(lost || got == full);
+        lossy += lost;
+    }
+    TV_CHECK(lossy >= 4 && lossy < 13); /* the pixel needs at least 4 pages (one per list), at most 12 */
+}
 
 int main(void)
 {
@@ -247,5 +297,6 @@ int main(void)
     TV_TEST_RUN(test_overflow_back_list);
     TV_TEST_RUN(test_prior_faces);
     TV_TEST_RUN(test_carry_overflow);
+    TV_TEST_RUN(test_pool_exhaustion);
     return tv_test_finish();
 }
