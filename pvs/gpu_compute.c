@@ -281,36 +281,6 @@ static void copy_draw_counts(pvs_context* ctx, VkCommandBuffer cmd, uint32_t l)
                     regions);
 }
 
-/* Timestamps: one before everything, then per tile one after each of P1,
- * P2, P3 of every layer and one after P4. */
-static uint32_t timestamp_count(const pvs_context* ctx)
-{
-    return 1 + pvs_tile_count(&ctx->grid) * (3 * ctx->layers.layer_count + 1);
-}
-
-static bool reserve_timestamps(pvs_context* ctx, uint32_t count, char* err, size_t err_size)
-{
-    if (!ctx->rnd->timestamps || count <= ctx->timestamp_capacity)
-        return true;
-    if (ctx->timestamps)
-        vkDestroyQueryPool(ctx->rnd->device, ctx->timestamps, NULL);
-    ctx->timestamps = VK_NULL_HANDLE;
-    ctx->timestamp_capacity = 0;
-    VkQueryPoolCreateInfo info = {.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
-                                  .queryType = VK_QUERY_TYPE_TIMESTAMP,
-                                  .queryCount = count + count / 2};
-    if (!RND_VK_OK(vkCreateQueryPool(ctx->rnd->device, &info, NULL, &ctx->timestamps), err, err_size))
-        return false;
-    ctx->timestamp_capacity = info.queryCount;
-    return true;
-}
-
-static void timestamp(pvs_context* ctx, VkCommandBuffer cmd, uint32_t* index)
-{
-    if (ctx->timestamps)
-        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, ctx->timestamps, (*index)++);
-}
-
 /* P1-P3 of every layer and P4, for tile `t`. */
 static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, bool first, uint32_t* ts)
 {
@@ -330,30 +300,30 @@ static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
         barrier(cmd);
         if (first) /* every tile classifies the same triangles */
             copy_draw_counts(ctx, cmd, l);
-        timestamp(ctx, cmd, ts);
+        pvs_timestamp(ctx, cmd, ts);
         render_pass(ctx, cmd, t, 0, PASS_LAYER);
         barrier(cmd); /* the dilated pass reads the exact pass's centre depths */
         render_pass(ctx, cmd, t, 1, PASS_LAYER);
         barrier(cmd);
         pvs_record_pages_taken(ctx, cmd, t, l);
-        timestamp(ctx, cmd, ts);
+        pvs_timestamp(ctx, cmd, ts);
         pvs_record_resolve(ctx, cmd);
         render_pass(ctx, cmd, t, 0, PASS_SPILL); /* both empty unless P3 asked for them */
         render_pass(ctx, cmd, t, 1, PASS_SPILL);
         barrier(cmd);
-        timestamp(ctx, cmd, ts);
+        pvs_timestamp(ctx, cmd, ts);
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_GATHER]);
     vkCmdDispatch(cmd, (t->width + 7) / 8, (t->height + 7) / 8, 1);
-    timestamp(ctx, cmd, ts);
+    pvs_timestamp(ctx, cmd, ts);
 }
 
 static void record(pvs_context* ctx, VkCommandBuffer cmd)
 {
     uint32_t ts = 0;
     if (ctx->timestamps)
-        vkCmdResetQueryPool(cmd, ctx->timestamps, 0, timestamp_count(ctx));
-    timestamp(ctx, cmd, &ts);
+        vkCmdResetQueryPool(cmd, ctx->timestamps, 0, pvs_timestamp_count(ctx));
+    pvs_timestamp(ctx, cmd, &ts);
     VkDescriptorSet sets[2];
     sets[TV_SET_SCENE] = ctx->gpu->set;
     sets[TV_PVS_SET] = ctx->set;
@@ -364,32 +334,6 @@ static void record(pvs_context* ctx, VkCommandBuffer cmd)
         record_tile(ctx, cmd, &t, i == 0, &ts);
     }
     pvs_host_barrier(cmd);
-}
-
-/* Per-phase GPU milliseconds from the timestamps of record(), per layer and
- * in total, summed over tiles (each tile's first P1 includes its resets). */
-static void read_timestamps(pvs_context* ctx, pvs_stats* st)
-{
-    uint32_t n = timestamp_count(ctx);
-    uint64_t* t = malloc(sizeof(uint64_t) * n);
-    if (!t || vkGetQueryPoolResults(ctx->rnd->device, ctx->timestamps, 0, n, sizeof(uint64_t) * n, t,
-                                    sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) != VK_SUCCESS) {
-        free(t);
-        return;
-    }
-    const double period_ms = ctx->rnd->props.limits.timestampPeriod * 1e-6;
-    uint32_t i = 1;
-    for (uint32_t tile = 0; tile < pvs_tile_count(&ctx->grid); tile++, i++) {
-        for (uint32_t l = 0; l < ctx->layers.layer_count; l++) {
-            for (int p = 0; p < 3; p++, i++) {
-                double ms = (double)(t[i] - t[i - 1]) * period_ms;
-                st->ms[1 + p] += ms;
-                ctx->per_layer[l].ms[p] += ms;
-            }
-        }
-        st->ms[4] += (double)(t[i] - t[i - 1]) * period_ms;
-    }
-    free(t);
 }
 
 /* A proxy is output when it is always or one of its faces was flagged:
@@ -570,7 +514,7 @@ bool pvs_compute_dynamic(pvs_context* ctx, const pvs_viewcell* vc, const pvs_pro
         widest = n > widest ? n : widest;
     }
     if (!pvs_reserve(ctx, widest, L->layer_count, err, err_size) ||
-        !reserve_timestamps(ctx, timestamp_count(ctx), err, err_size))
+        !pvs_reserve_timestamps(ctx, pvs_timestamp_count(ctx), err, err_size))
         return false;
     memset(ctx->per_layer, 0, sizeof *ctx->per_layer * L->layer_count);
     memcpy(ctx->buffers[TV_PVS_BIND_LAYER_TRIS].mapped, L->tri_ids, sizeof(uint32_t) * L->tri_count);
@@ -585,7 +529,7 @@ bool pvs_compute_dynamic(pvs_context* ctx, const pvs_viewcell* vc, const pvs_pro
     if (!run_gpu(ctx, st, err, err_size))
         return false;
     if (ctx->timestamps)
-        read_timestamps(ctx, st);
+        pvs_read_timestamps(ctx, st);
     else
         st->ms[2] = tv_now_ms() - gpu_start;
 

@@ -109,6 +109,16 @@ void pvs_record_resolve(pvs_context* ctx, VkCommandBuffer cmd);
 /* Makes every write so far visible to host reads. */
 void pvs_host_barrier(VkCommandBuffer cmd);
 
+/* gpu_timestamps.c: timestamps of a computation (one before everything, then
+ * per tile one after each of P1, P2, P3 of every layer and one after P4). */
+uint32_t pvs_timestamp_count(const pvs_context* ctx);
+/* Grows the query pool to `count` (no pool when the device has no timestamps). */
+bool pvs_reserve_timestamps(pvs_context* ctx, uint32_t count, char* err, size_t err_size);
+/* Records the next timestamp at *index and advances it. */
+void pvs_timestamp(pvs_context* ctx, VkCommandBuffer cmd, uint32_t* index);
+/* Adds the per-phase GPU milliseconds to st->ms and the per-layer figures. */
+void pvs_read_timestamps(pvs_context* ctx, pvs_stats* st);
+
 /* gpu_context.c: (re)writes every descriptor of ctx->set. */
 void pvs_write_descriptors(pvs_context* ctx);
 /* Grows the per-layer buffers to hold `triangles` layer triangles and
