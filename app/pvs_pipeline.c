@@ -114,14 +114,16 @@ static double latency_for(const tv_pvs_pipeline* p, int frusta)
     return ms * 1e-3 * frusta * p->desc.latency_factor;
 }
 
+/* `first`: the start-up PVS is used from the first frame on, so its window
+ * starts at the request instead of one latency later. */
 static bool request(tv_pvs_pipeline* p, double t, double frame_s, bool first, char* err, size_t err_size)
 {
     pred_viewcell_desc vd = p->desc.viewcell;
     pvs_request req;
     memset(&req, 0, sizeof req);
     /* requests go out back to back: this PVS is in use from its arrival until
-     * the next one arrives one latency later, plus a frame of slack. A PVS over
-     * all directions takes one compute per frustum: sized again for that
+     * the next one arrives one latency later, plus a frame of slack. A PVS
+     * over all directions takes one compute per frustum: sized again for that
      * latency (the longer horizon keeps it all-directions) */
     for (int frusta = 1;; frusta = req.vc.frusta) {
         double latency = latency_for(p, frusta);
