@@ -52,10 +52,8 @@ static void print_run(int i, const pvs_method_stats* st, pvs_method_kind kind)
         printf("run %-13d total %.2f\n", i, st->total_ms);
 }
 
-/* The same request again. The ids may differ from the first's where a
- * k-buffer overflows: P1 appends the draw lists with atomics, so the order
- * in which fronts reach a full list follows the threads' timing (a warning,
- * docs/pvs-gpu-passes.md, "Cost per phase"). */
+/* The same request again: a warning where the ids differ from the first's,
+ * which they should not (docs/pvs-gpu-passes.md, "Repeatability"). */
 static bool compute_again(pvs_method* m, const pvs_request* req, const uint32_t* ids, uint32_t count,
                           pvs_method_stats* st, char* err, size_t err_size)
 {

@@ -101,7 +101,8 @@ static void write_view(pvs_context* ctx, const pvs_viewcell* vc, const rnd_camer
                       .height = ctx->height,
                       .k = ctx->k,
                       .triangle_count = ctx->triangle_count,
-                      .explain = ctx->explain};
+                      .explain = ctx->explain,
+                      .list_capacity = ctx->list_capacity};
     rnd_camera_view_proj(cam, v->aspect, g.view_proj);
     for (int i = 0; i < 3; i++) {
         g.apex[i] = v->apex[i];
@@ -281,6 +282,20 @@ static void copy_draw_counts(pvs_context* ctx, VkCommandBuffer cmd, uint32_t l)
                     regions);
 }
 
+/* P1 of a layer of `count` triangles: classify, then list in layer order
+ * (pvs_order.comp: scan the workgroups' counts, write), so that nothing P1
+ * outputs depends on the order its invocations ran in. */
+static void record_classify(pvs_context* ctx, VkCommandBuffer cmd, uint32_t count)
+{
+    const uint32_t groups = (count + TV_WG_SIZE - 1) / TV_WG_SIZE;
+    const int pipes[3] = {PVS_PIPE_CLASSIFY, PVS_PIPE_ORDER_SCAN, PVS_PIPE_ORDER_WRITE};
+    for (int i = 0; i < 3; i++) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[pipes[i]]);
+        vkCmdDispatch(cmd, pipes[i] == PVS_PIPE_ORDER_SCAN ? 1 : groups, 1, 1);
+        barrier(cmd);
+    }
+}
+
 /* P1-P3 of every layer and P4, for tile `t`. */
 static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t, bool first, uint32_t* ts)
 {
@@ -295,9 +310,7 @@ static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
         vkCmdPushConstants(cmd, ctx->layout, stages, 0, sizeof push, &push);
         reset_layer_counters(ctx, cmd);
         barrier(cmd);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[PVS_PIPE_CLASSIFY]);
-        vkCmdDispatch(cmd, (push.layer_count + TV_WG_SIZE - 1) / TV_WG_SIZE, 1, 1);
-        barrier(cmd);
+        record_classify(ctx, cmd, push.layer_count);
         if (first) /* every tile classifies the same triangles */
             copy_draw_counts(ctx, cmd, l);
         pvs_timestamp(ctx, cmd, ts);

@@ -94,7 +94,9 @@ bool pvs_reserve(pvs_context* ctx, uint32_t triangles, uint32_t layers, char* er
         VkDeviceSize n = triangles + triangles / 2;
         if (!create_buffer(ctx, TV_PVS_BIND_FF, n * 4, err, err_size) ||
             !create_buffer(ctx, TV_PVS_BIND_BF, n * 4, err, err_size) ||
-            !create_buffer(ctx, TV_PVS_BIND_SIL, n * 3 * TV_PVS_SIL_VEC4 * 16, err, err_size))
+            !create_buffer(ctx, TV_PVS_BIND_SIL, n * 3 * TV_PVS_SIL_VEC4 * 16, err, err_size) ||
+            !create_buffer(ctx, TV_PVS_BIND_ORDER, TV_PVS_ORDER_GROUP(n, (n + TV_WG_SIZE - 1) / TV_WG_SIZE) * 4, err,
+                           err_size))
             return false;
         ctx->list_capacity = (uint32_t)n;
     }

@@ -25,7 +25,8 @@ typedef struct pvs_view_gpu {
     float near_dist, delta, focal_px, max_width;      /* max_width: clamp of infinite trim widths */
     uint32_t width, height, k, triangle_count;
     uint32_t tile_x, tile_y, tile_w, tile_h; /* rewritten per tile by the command buffer */
-    uint32_t explain, kb_holes, pad[2];      /* pvs_desc.explain; kb_holes: pvs_pool_regrow */
+    uint32_t explain, kb_holes;             /* pvs_desc.explain; kb_holes: pvs_pool_regrow */
+    uint32_t list_capacity, pad;            /* TV_PVS_BIND_ORDER's cap: pvs_context.list_capacity */
 } pvs_view_gpu;
 _Static_assert(offsetof(pvs_view_gpu, apex) == 64 && offsetof(pvs_view_gpu, up) == 112 &&
                    offsetof(pvs_view_gpu, tan_half_x) == 128 && offsetof(pvs_view_gpu, near_dist) == 144 &&
@@ -44,8 +45,8 @@ typedef struct pvs_push {
 _Static_assert(offsetof(pvs_push, kind) == 12 && sizeof(pvs_push) == 16,
                "pvs_push must match pvs_push_block in pvs_common.glsl");
 
-enum { PVS_PIPE_CLASSIFY, PVS_PIPE_RESOLVE, PVS_PIPE_RESOLVE_GROUP, PVS_PIPE_GATHER, PVS_PIPE_FF, PVS_PIPE_BF,
-       PVS_PIPE_TRIM, PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
+enum { PVS_PIPE_CLASSIFY, PVS_PIPE_ORDER_SCAN, PVS_PIPE_ORDER_WRITE, PVS_PIPE_RESOLVE, PVS_PIPE_RESOLVE_GROUP,
+       PVS_PIPE_GATHER, PVS_PIPE_FF, PVS_PIPE_BF, PVS_PIPE_TRIM, PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
 
 /* Buffers indexed by their binding (TV_PVS_BIND_*; VIS_IDS and VIS_WIDE
  * are images). */
@@ -98,7 +99,7 @@ struct pvs_context {
 #define PVS_VIS_ID_FORMAT VK_FORMAT_R32_UINT
 #define PVS_VIS_DEPTH_FORMAT VK_FORMAT_D32_SFLOAT
 
-/* gpu_pipelines.c: the set layout, pipeline layout and the eight pipelines. */
+/* gpu_pipelines.c: the set layout, pipeline layout and the ten pipelines. */
 bool pvs_pipelines_create(pvs_context* ctx, char* err, size_t err_size);
 void pvs_pipelines_destroy(pvs_context* ctx);
 

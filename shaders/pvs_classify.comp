@@ -1,16 +1,19 @@
 #version 460
 // P1: one invocation per triangle of the layer. Classifies the triangle as
-// front- or back-facing from v* (plane test, as pvs/silhouette.c), appends
-// it to the FF or BF draw list (a back the renderer culls from the whole
-// viewcell flagged TV_ID_CULLED) unless its clip-space outcodes put it outside
-// one frustum plane, and emits a silhouette record (trim quad + umbra quad,
-// one trim-region id) for every silhouette edge it owns: border and
-// non-manifold edges always, an edge to an opposite-facing neighbour when
-// this triangle is the front-facing one. A see-through triangle (a proxy's
-// face, an SCN_ALPHA_BLEND one) goes to the FF list whichever way it faces
-// and has no silhouette: it never occludes (pvs_face.frag). Counts go
-// straight into the indirect draw commands, so nothing returns to the CPU
-// between phases.
+// front- or back-facing from v* (plane test, as pvs/silhouette.c), for the FF
+// or BF draw list (a back the renderer culls from the whole viewcell flagged
+// TV_ID_CULLED) unless its clip-space outcodes put it outside one frustum
+// plane, and emits a silhouette record (trim quad + umbra quad) for every
+// silhouette edge it owns: border and non-manifold edges always, an edge to
+// an opposite-facing neighbour when this triangle is the front-facing one. A
+// see-through triangle (a proxy's face, an SCN_ALPHA_BLEND one) goes to the
+// FF list whichever way it faces and has no silhouette: it never occludes
+// (pvs_face.frag). Nothing is appended here: the triangle's class word and
+// its records (in its own slots 3 i + e) wait for pvs_order.comp, which
+// lists them in layer order, so that the draws' primitive order and the
+// trim-region ids are the same in every run (an append with atomics follows
+// the threads' timing, and with it which fronts fill a k-buffer and how
+// P3's sort ties break). This pass only counts each workgroup's entries.
 #extension GL_GOOGLE_include_directive : require
 #include "pvs_geometry.glsl"
 #include "pvs_trim.glsl"
@@ -50,8 +53,9 @@ uint outcode(vec4 clip)
 }
 
 // other: the triangle across the edge, or >= TV_ADJ_CRACK (a border, crack
-// or non-manifold edge).
-void emit_silhouette(vec3 e0, vec3 e1, vec3 inside, uint other)
+// or non-manifold edge). Writes record `slot` (its region id is
+// pvs_order.comp's); false when the edge has no trim quad.
+bool emit_silhouette(uint slot, vec3 e0, vec3 e1, vec3 inside, uint other)
 {
     bool has_back = other < TV_ADJ_CRACK;
     vec3 nb = vec3(0.0), pb = vec3(0.0);
@@ -62,31 +66,25 @@ void emit_silhouette(vec3 e0, vec3 e1, vec3 inside, uint other)
     vec3 c[6];
     vec2 near, far;
     if (!pvs_trim_quad(e0, e1, inside, has_back, nb, pb, c, near, far))
-        return;
-    uint slot = atomicAdd(counters[TV_PVS_C_DRAW_TRIM], 6u) / 6u;
-    atomicAdd(counters[TV_PVS_C_DRAW_UMBRA], 6u);
-    uint region = atomicAdd(counters[TV_PVS_C_REGIONS], 1u) | (other == TV_ADJ_CRACK ? TV_REGION_CRACK : 0u);
+        return false;
     uint base = slot * TV_PVS_SIL_VEC4;
-    sil[base] = vec4(c[0], uintBitsToFloat(region));
+    sil[base] = vec4(c[0], 0.0);
     for (uint i = 1u; i < TV_PVS_SIL_VEC4; i++)
         sil[base + i] = vec4(c[i], i == 2u ? near.x : i == 3u ? near.y : i == 4u ? far.x : far.y);
+    return true;
 }
 
-void main()
+// Layer triangle i's class word (TV_PVS_CLASS_*), its records written.
+uint classify(uint i)
 {
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= pc.layer_count)
-        return;
     uint tri = layer_tris[pc.layer_offset + i];
     vec3 p[3] = vec3[3](corner_position(tri, 0u), corner_position(tri, 1u), corner_position(tri, 2u));
     uint codes = outcode(view.view_proj * vec4(p[0], 1.0)) & outcode(view.view_proj * vec4(p[1], 1.0)) &
                  outcode(view.view_proj * vec4(p[2], 1.0));
-    if (pvs_seethrough(tri)) {
-        if (codes == 0u)
-            ff_list[atomicAdd(counters[TV_PVS_C_DRAW_FF], 3u) / 3u] = tri;
-        return;
-    }
+    if (pvs_seethrough(tri))
+        return codes == 0u ? TV_PVS_CLASS_FF : 0u;
     bool front = front_facing(tri);
+    uint word = 0u;
     if (codes == 0u) {
         // A single-sided back wholly behind the viewcell (short of its plane
         // by more than rounding) the renderer culls from every eye; a back
@@ -94,21 +92,43 @@ void main()
         float reach = front ? 0.0 : front_reach(p);
         bool culled = !front && reach < -1e-4 &&
                       (tv_materials[tv_tri_material[tri]].flags & TV_MAT_DOUBLE_SIDED) == 0u;
-        if (front)
-            ff_list[atomicAdd(counters[TV_PVS_C_DRAW_FF], 3u) / 3u] = tri;
-        else
-            bf_list[atomicAdd(counters[TV_PVS_C_DRAW_BF], 3u) / 3u] =
-                tri | (culled ? TV_ID_CULLED : 0u) | (reach > 0.0 ? TV_ID_STRADDLED : 0u);
+        word = front ? TV_PVS_CLASS_FF
+                     : TV_PVS_CLASS_BF | (culled ? TV_PVS_CLASS_CULLED : 0u) | (reach > 0.0 ? TV_PVS_CLASS_STRADDLED : 0u);
     }
     // Silhouettes of triangles outside the frustum are still emitted (unless
     // behind the near or beyond the far plane): their trim quads extend
     // inwards and may reach into the image.
     if ((codes & 48u) != 0u)
-        return;
+        return word;
     for (uint e = 0u; e < 3u; e++) {
         uint other = adjacency[3u * tri + e];
         bool silhouette = other >= TV_ADJ_CRACK || (front && !front_facing(other));
-        if (silhouette)
-            emit_silhouette(p[e], p[(e + 1u) % 3u], p[(e + 2u) % 3u], other);
+        if (silhouette && emit_silhouette(3u * i + e, p[e], p[(e + 1u) % 3u], p[(e + 2u) % 3u], other))
+            word |= TV_PVS_CLASS_EDGE(e) | (other == TV_ADJ_CRACK ? TV_PVS_CLASS_CRACK(e) : 0u);
     }
+    return word;
+}
+
+shared uint group_counts[3];
+
+void main()
+{
+    uint i = gl_GlobalInvocationID.x, lid = gl_LocalInvocationID.x;
+    if (lid < 3u)
+        group_counts[lid] = 0u;
+    barrier();
+    uint word = i < pc.layer_count ? classify(i) : 0u;
+    if (i < pc.layer_count) {
+        p1_order[TV_PVS_ORDER_CLASS(view.list_capacity, i)] = word;
+        uint records = bitCount(word & (TV_PVS_CLASS_EDGE(0u) | TV_PVS_CLASS_EDGE(1u) | TV_PVS_CLASS_EDGE(2u)));
+        if ((word & TV_PVS_CLASS_FF) != 0u)
+            atomicAdd(group_counts[0], 1u);
+        if ((word & TV_PVS_CLASS_BF) != 0u)
+            atomicAdd(group_counts[1], 1u);
+        if (records != 0u)
+            atomicAdd(group_counts[2], records);
+    }
+    barrier();
+    if (lid < 3u)
+        p1_order[TV_PVS_ORDER_GROUP(view.list_capacity, gl_WorkGroupID.x) + lid] = group_counts[lid];
 }

@@ -20,7 +20,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
     float near_dist, delta, focal_px, max_width;
     uint width, height, k, triangle_count; // width, height: the whole image
     uint tile_x, tile_y, tile_w, tile_h;    // the tile being computed (pvs/tiles.h): per-pixel buffers index it
-    uint explain, kb_holes, pad1, pad2;     // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain); kb_holes: pvs_kbuffer.glsl
+    uint explain, kb_holes, list_capacity, pad2; // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain); kb_holes: pvs_kbuffer.glsl; list_capacity: TV_PVS_BIND_ORDER's cap
     float depth_bound[];                    // pvs/depth_bound.h's cells, all levels (pvs_trim.glsl)
 } view;
 
@@ -61,6 +61,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CENTRE_DEPTH) PVS_RW cohe
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LOST) PVS_RW coherent buffer pvs_lost_buf { uint lost[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_COOP_LIST) PVS_RW buffer pvs_coop_list_buf { uint coop_list[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_SPILL) PVS_RW coherent buffer pvs_spill_buf { uint spill_list[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ORDER) PVS_RW buffer pvs_order_buf { uint p1_order[]; };
 
 layout(push_constant) uniform pvs_push_block {
     uint layer_offset;

@@ -1,7 +1,7 @@
 #version 460
-// P2, trim-region and umbra quads: six vertices per silhouette record of P1
-// (trim: e0 e1 t1 t0, umbra: e0 e1 u1 u0, as two triangles each). Trim
-// quads are drawn three times: instance 0 with t1, t0 at the midpoint depth
+// P2, trim-region and umbra quads: six vertices per entry of P1's silhouette
+// list, each naming a record (trim: e0 e1 t1 t0, umbra: e0 e1 u1 u0, as two
+// triangles each). Trim quads are drawn three times: instance 0 with t1, t0 at the midpoint depth
 // of the silhouette's two planes, instance 1 at the nearer of them and
 // instance 2 at the farther (kept in the record's w; 0 draws nothing: an
 // edge without a back neighbour, or, for instance 2, whose front triangle
@@ -23,7 +23,7 @@ void main()
     // corners 0 1 2 0 2 3, a nibble each: a constant array indexed at run
     // time costs every invocation an array copy on llvmpipe (pvs_geometry.glsl)
     uint corner = (0x320210u >> (4u * (uint(gl_VertexIndex) - slot * 6u))) & 15u;
-    uint base = slot * TV_PVS_SIL_VEC4;
+    uint base = p1_order[TV_PVS_ORDER_SIL(slot)] * TV_PVS_SIL_VEC4; // the record, in P1's order (pvs_order.comp)
     // corners 2, 3 are record entries 2, 3 (trim) or 4, 5 (umbra)
     uint entry = corner < 2u ? corner : corner + (pc.kind == TV_PVS_KIND_UMBRA ? 2u : 0u);
     vec3 p = sil[base + entry].xyz;

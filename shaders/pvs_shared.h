@@ -199,7 +199,7 @@
 #define TV_PVS_BIND_LAYER_TRIS 2  // the triangle ids of every layer, back to back
 #define TV_PVS_BIND_FF         3  // P1 -> P2: front-facing triangle ids of the layer
 #define TV_PVS_BIND_BF         4  // P1 -> P2: back-facing triangle ids of the layer
-#define TV_PVS_BIND_SIL        5  // P1 -> P2: TV_PVS_SIL_VEC4 vec4 per silhouette edge
+#define TV_PVS_BIND_SIL        5  // P1 -> P2: TV_PVS_SIL_VEC4 vec4 per silhouette record, slot 3 i + e (layer triangle i, edge e)
 #define TV_PVS_BIND_COUNTERS   6  // indirect commands and counters (TV_PVS_C_*)
 #define TV_PVS_BIND_KPOOL      7  // k-buffer pages: TV_PVS_PAGE uvec2 (depth bits, triangle or region id) each
 #define TV_PVS_BIND_KHEADS     8  // uint x TV_PVS_LISTS per pixel: first page + 1 of each list (0: empty), reset every layer
@@ -232,7 +232,21 @@
 #define TV_PVS_BIND_SPILL      24 // uint: the spill list's length, then interleaved: its entries (the layer's fronts that lost a fragment in P2, drawn by the spill draws) and a layer stamp per drawn id
 #define TV_PVS_SPILL_ENTRY(i)  (1u + 2u * (i)) // slot of the list's entry i in TV_PVS_BIND_SPILL
 #define TV_PVS_SPILL_STAMP(t)  (2u + 2u * (t)) // slot of drawn id t's stamp: 1 + the last layer that listed it (0 after each tile's reset)
-#define TV_PVS_BINDINGS        25
+#define TV_PVS_BIND_ORDER      25 // P1's lists in layer order (pvs_order.comp), uints; cap = view.list_capacity:
+#define TV_PVS_ORDER_SIL(i)        (i)                       // the layer's silhouette list: record slot of entry i (P2's quads)
+#define TV_PVS_ORDER_CLASS(cap, i) (3u * (cap) + (i))       // layer triangle i's TV_PVS_CLASS_* bits
+#define TV_PVS_ORDER_GROUP(cap, g) (4u * (cap) + 4u * (g))  // P1 workgroup g: FF, BF, record counts, then offsets and first region id
+#define TV_PVS_BINDINGS        26
+
+// Class word of a layer triangle (TV_PVS_ORDER_CLASS): which of P1's lists
+// it enters, a back's flags, and which of its edges emitted a silhouette
+// record (in the fixed record slot 3 i + e) and which of those is a crack.
+#define TV_PVS_CLASS_FF        1u
+#define TV_PVS_CLASS_BF        2u
+#define TV_PVS_CLASS_CULLED    4u
+#define TV_PVS_CLASS_STRADDLED 8u
+#define TV_PVS_CLASS_EDGE(e)   (16u << (e))
+#define TV_PVS_CLASS_CRACK(e)  (128u << (e))
 
 // vec4s per silhouette record: e0 (w = region id bits), e1, trim corner
 // behind e1, trim corner behind e0 (w: their nearer plane depths), umbra
@@ -241,7 +255,7 @@
 #define TV_PVS_SIL_VEC4 6
 
 // Slots of the counters buffer (uints). Four VkDrawIndirectCommand (FF, BF,
-// trim, umbra; vertexCount is bumped by P1 per primitive), one
+// trim, umbra; vertexCount set by P1's scan, pvs_order.comp), one
 // VkDispatchIndirectCommand for P3, the active count, the two spill draws
 // (after P3, exact and dilated, of the fronts in TV_PVS_BIND_SPILL; P3 sets
 // their vertexCount from its length when a pixel needs them), the VkDispatchIndirectCommand of P3's
@@ -259,7 +273,7 @@
 #define TV_PVS_C_DISPATCH_COOP 28
 #define TV_PVS_C_COOP       31 // pixels deferred to the cooperative pass in this layer
 #define TV_PVS_C_PER_LAYER  32 // slots [0, 32) are reset before every layer
-#define TV_PVS_C_REGIONS    32 // trim regions numbered so far
+#define TV_PVS_C_REGIONS    32 // trim regions numbered so far (in this tile)
 #define TV_PVS_C_OVERFLOW_FRONTS 33
 #define TV_PVS_C_COOP_TOTAL 34 // pixel resolves sorted cooperatively
 #define TV_PVS_C_COUNT      36
