@@ -282,16 +282,15 @@ static void copy_draw_counts(pvs_context* ctx, VkCommandBuffer cmd, uint32_t l)
                     regions);
 }
 
-/* P1 of a layer of `count` triangles: classify, then list in layer order
- * (pvs_order.comp: scan the workgroups' counts, write), so that nothing P1
- * outputs depends on the order its invocations ran in. */
+/* P1 of a layer of `count` triangles: classify (its last workgroup scans
+ * the counts), then list in layer order (pvs_order.comp), so that nothing
+ * P1 outputs depends on the order its invocations ran in. */
 static void record_classify(pvs_context* ctx, VkCommandBuffer cmd, uint32_t count)
 {
-    const uint32_t groups = (count + TV_WG_SIZE - 1) / TV_WG_SIZE;
-    const int pipes[3] = {PVS_PIPE_CLASSIFY, PVS_PIPE_ORDER_SCAN, PVS_PIPE_ORDER_WRITE};
-    for (int i = 0; i < 3; i++) {
+    const int pipes[2] = {PVS_PIPE_CLASSIFY, PVS_PIPE_ORDER};
+    for (int i = 0; i < 2; i++) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, ctx->pipelines[pipes[i]]);
-        vkCmdDispatch(cmd, pipes[i] == PVS_PIPE_ORDER_SCAN ? 1 : groups, 1, 1);
+        vkCmdDispatch(cmd, (count + TV_WG_SIZE - 1) / TV_WG_SIZE, 1, 1);
         barrier(cmd);
     }
 }

@@ -45,8 +45,8 @@ typedef struct pvs_push {
 _Static_assert(offsetof(pvs_push, kind) == 12 && sizeof(pvs_push) == 16,
                "pvs_push must match pvs_push_block in pvs_common.glsl");
 
-enum { PVS_PIPE_CLASSIFY, PVS_PIPE_ORDER_SCAN, PVS_PIPE_ORDER_WRITE, PVS_PIPE_RESOLVE, PVS_PIPE_RESOLVE_GROUP,
-       PVS_PIPE_GATHER, PVS_PIPE_FF, PVS_PIPE_BF, PVS_PIPE_TRIM, PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
+enum { PVS_PIPE_CLASSIFY, PVS_PIPE_ORDER, PVS_PIPE_RESOLVE, PVS_PIPE_RESOLVE_GROUP, PVS_PIPE_GATHER, PVS_PIPE_FF,
+       PVS_PIPE_BF, PVS_PIPE_TRIM, PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
 
 /* Buffers indexed by their binding (TV_PVS_BIND_*; VIS_IDS and VIS_WIDE
  * are images). */
@@ -99,7 +99,7 @@ struct pvs_context {
 #define PVS_VIS_ID_FORMAT VK_FORMAT_R32_UINT
 #define PVS_VIS_DEPTH_FORMAT VK_FORMAT_D32_SFLOAT
 
-/* gpu_pipelines.c: the set layout, pipeline layout and the ten pipelines. */
+/* gpu_pipelines.c: the set layout, pipeline layout and the nine pipelines. */
 bool pvs_pipelines_create(pvs_context* ctx, char* err, size_t err_size);
 void pvs_pipelines_destroy(pvs_context* ctx);
 

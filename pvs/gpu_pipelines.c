@@ -1,5 +1,5 @@
 /* gpu_pipelines.c - descriptor set layout, pipeline layout and the pipelines
- * of the PVS passes: six compute (P1 classify and its two ordering steps, P3
+ * of the PVS passes: five compute (P1 classify and order, P3
  * resolve per thread and per workgroup, P4 gather) and
  * four raster pipelines of P2 sharing one dynamic-rendering format (the
  * visibility buffer's id + depth attachments). */
@@ -117,16 +117,11 @@ bool pvs_pipelines_create(pvs_context* ctx, char* err, size_t err_size)
     const uint32_t width_data[2] = {ctx->coop_width, ctx->kb_paged};
     const VkSpecializationInfo coop_min = {2, entries, sizeof min_data, min_data};
     const VkSpecializationInfo coop_width = {2, entries, sizeof width_data, width_data};
-    const uint32_t steps[2] = {0, 1}; /* pvs_order.comp's STEP: scan, write */
-    const VkSpecializationInfo scan = {1, entries, sizeof(uint32_t), &steps[0]};
-    const VkSpecializationInfo write = {1, entries, sizeof(uint32_t), &steps[1]};
     return create_layouts(ctx, err, err_size) &&
            create_compute(ctx, tv_spv_pvs_classify_comp, sizeof tv_spv_pvs_classify_comp, NULL,
                           &ctx->pipelines[PVS_PIPE_CLASSIFY], err, err_size) &&
-           create_compute(ctx, tv_spv_pvs_order_comp, sizeof tv_spv_pvs_order_comp, &scan,
-                          &ctx->pipelines[PVS_PIPE_ORDER_SCAN], err, err_size) &&
-           create_compute(ctx, tv_spv_pvs_order_comp, sizeof tv_spv_pvs_order_comp, &write,
-                          &ctx->pipelines[PVS_PIPE_ORDER_WRITE], err, err_size) &&
+           create_compute(ctx, tv_spv_pvs_order_comp, sizeof tv_spv_pvs_order_comp, NULL,
+                          &ctx->pipelines[PVS_PIPE_ORDER], err, err_size) &&
            create_compute(ctx, tv_spv_pvs_resolve_comp, sizeof tv_spv_pvs_resolve_comp, &coop_min,
                           &ctx->pipelines[PVS_PIPE_RESOLVE], err, err_size) &&
            create_compute(ctx, tv_spv_pvs_resolve_group_comp, sizeof tv_spv_pvs_resolve_group_comp, &coop_width,

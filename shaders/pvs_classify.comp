@@ -13,7 +13,8 @@
 // lists them in layer order, so that the draws' primitive order and the
 // trim-region ids are the same in every run (an append with atomics follows
 // the threads' timing, and with it which fronts fill a k-buffer and how
-// P3's sort ties break). This pass only counts each workgroup's entries.
+// P3's sort ties break). Each workgroup counts its entries; the last one to
+// finish turns the counts into offsets (scan), whichever that is.
 #extension GL_GOOGLE_include_directive : require
 #include "pvs_geometry.glsl"
 #include "pvs_trim.glsl"
@@ -110,6 +111,54 @@ uint classify(uint i)
 }
 
 shared uint group_counts[3];
+shared uvec3 partial[TV_WG_SIZE];
+shared bool last_group;
+
+uint group_slot(uint g) { return TV_PVS_ORDER_GROUP(view.list_capacity, g); }
+
+uvec3 group_counts_of(uint g)
+{
+    uint s = group_slot(g);
+    return uvec3(p1_order[s], p1_order[s + 1u], p1_order[s + 2u]);
+}
+
+// Every workgroup's counts become exclusive offsets and the layer's first
+// region id (region ids: the running count over the tile's layers in layer
+// order, as the append numbered them before, so a later layer's regions
+// still sort after an earlier layer's at equal depth and kind); the totals
+// become the draws' vertex counts. Each invocation scans a run of
+// consecutive workgroups.
+void scan()
+{
+    uint t = gl_LocalInvocationID.x, groups = gl_NumWorkGroups.x;
+    uint per = (groups + TV_WG_SIZE - 1u) / TV_WG_SIZE, g0 = min(t * per, groups), g1 = min(g0 + per, groups);
+    uint first_region = counters[TV_PVS_C_REGIONS];
+    uvec3 sum = uvec3(0u);
+    for (uint g = g0; g < g1; g++)
+        sum += group_counts_of(g);
+    partial[t] = sum;
+    barrier();
+    uvec3 off = uvec3(0u);
+    for (uint j = 0u; j < t; j++)
+        off += partial[j];
+    for (uint g = g0; g < g1; g++) {
+        uvec3 c = group_counts_of(g);
+        uint s = group_slot(g);
+        p1_order[s] = off.x;
+        p1_order[s + 1u] = off.y;
+        p1_order[s + 2u] = off.z;
+        p1_order[s + 3u] = first_region + off.z;
+        off += c;
+    }
+    if (t == TV_WG_SIZE - 1u) { // off: the layer's totals
+        counters[TV_PVS_C_DRAW_FF] = 3u * off.x;
+        counters[TV_PVS_C_DRAW_BF] = 3u * off.y;
+        counters[TV_PVS_C_DRAW_TRIM] = 6u * off.z;
+        counters[TV_PVS_C_DRAW_UMBRA] = 6u * off.z;
+        counters[TV_PVS_C_REGIONS] = first_region + off.z;
+        counters[TV_PVS_C_P1_DONE] = 0u; // for the next layer
+    }
+}
 
 void main()
 {
@@ -130,5 +179,14 @@ void main()
     }
     barrier();
     if (lid < 3u)
-        p1_order[TV_PVS_ORDER_GROUP(view.list_capacity, gl_WorkGroupID.x) + lid] = group_counts[lid];
+        p1_order[group_slot(gl_WorkGroupID.x) + lid] = group_counts[lid];
+    memoryBarrierBuffer(); // the counts before this group counts as done
+    barrier();
+    if (lid == 0u)
+        last_group = atomicAdd(counters[TV_PVS_C_P1_DONE], 1u) == gl_NumWorkGroups.x - 1u;
+    barrier();
+    if (!last_group)
+        return;
+    memoryBarrierBuffer(); // every group's counts, seen through its atomicAdd
+    scan();
 }

@@ -276,6 +276,7 @@
 #define TV_PVS_C_REGIONS    32 // trim regions numbered so far (in this tile)
 #define TV_PVS_C_OVERFLOW_FRONTS 33
 #define TV_PVS_C_COOP_TOTAL 34 // pixel resolves sorted cooperatively
+#define TV_PVS_C_P1_DONE    35 // P1 workgroups of the layer done: the last one scans them and resets it (pvs_classify.comp)
 #define TV_PVS_C_COUNT      36
 
 // Fragment kinds of P2 (push constant `kind`), = TV_ENTRY_* above.
