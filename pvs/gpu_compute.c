@@ -156,7 +156,8 @@ void pvs_record_resolve(pvs_context* ctx, VkCommandBuffer cmd)
 }
 
 /* Per-layer slots of the counters buffer (empty draws, an empty dispatch),
- * the per-pixel k-buffer counters and list heads, and the page pool. */
+ * the per-pixel k-buffer counters and list heads, the page pool and P1's
+ * workgroup counts. */
 static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
 {
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_PIXCOUNT].buffer, 0, VK_WHOLE_SIZE, 0);
@@ -166,6 +167,8 @@ static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
         vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_KALLOC].buffer, TV_PVS_A_TAKEN * 4, 4, 0);
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_LOST].buffer, 0, VK_WHOLE_SIZE, 0x7F800000u); /* +inf */
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_SPILL].buffer, 0, sizeof(uint32_t), 0); /* the list's length */
+    vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_ORDER].buffer, TV_PVS_ORDER_GROUP(ctx->list_capacity, 0) * 4,
+                    VK_WHOLE_SIZE, 0); /* P1's workgroup counts */
     uint32_t c[TV_PVS_C_PER_LAYER] = {0};
     for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_UMBRA; d += 4)
         c[d + 1] = 1; /* instanceCount */

@@ -13,8 +13,8 @@
 // lists them in layer order, so that the draws' primitive order and the
 // trim-region ids are the same in every run (an append with atomics follows
 // the threads' timing, and with it which fronts fill a k-buffer and how
-// P3's sort ties break). Each workgroup counts its entries; the last one to
-// finish turns the counts into offsets (scan), whichever that is.
+// P3's sort ties break). Each workgroup's entries are counted; the last
+// invocation to finish turns the counts into offsets (scan).
 #extension GL_GOOGLE_include_directive : require
 #include "pvs_geometry.glsl"
 #include "pvs_trim.glsl"
@@ -110,83 +110,55 @@ uint classify(uint i)
     return word;
 }
 
-shared uint group_counts[3];
-shared uvec3 partial[TV_WG_SIZE];
-shared bool last_group;
-
 uint group_slot(uint g) { return TV_PVS_ORDER_GROUP(view.list_capacity, g); }
 
-uvec3 group_counts_of(uint g)
-{
-    uint s = group_slot(g);
-    return uvec3(p1_order[s], p1_order[s + 1u], p1_order[s + 2u]);
-}
-
-// Every workgroup's counts become exclusive offsets and the layer's first
-// region id (region ids: the running count over the tile's layers in layer
-// order, as the append numbered them before, so a later layer's regions
-// still sort after an earlier layer's at equal depth and kind); the totals
-// become the draws' vertex counts. Each invocation scans a run of
-// consecutive workgroups.
+// By the invocation that finishes last, whichever: every workgroup's counts
+// become exclusive offsets and the layer's first region id (region ids: the
+// running count over the tile's layers in layer order, as the append
+// numbered them before, so a later layer's regions still sort after an
+// earlier layer's at equal depth and kind); the totals become the draws'
+// vertex counts. Serially: a layer has a few thousand workgroups at most.
 void scan()
 {
-    uint t = gl_LocalInvocationID.x, groups = gl_NumWorkGroups.x;
-    uint per = (groups + TV_WG_SIZE - 1u) / TV_WG_SIZE, g0 = min(t * per, groups), g1 = min(g0 + per, groups);
     uint first_region = counters[TV_PVS_C_REGIONS];
-    uvec3 sum = uvec3(0u);
-    for (uint g = g0; g < g1; g++)
-        sum += group_counts_of(g);
-    partial[t] = sum;
-    barrier();
     uvec3 off = uvec3(0u);
-    for (uint j = 0u; j < t; j++)
-        off += partial[j];
-    for (uint g = g0; g < g1; g++) {
-        uvec3 c = group_counts_of(g);
+    for (uint g = 0u; g < gl_NumWorkGroups.x; g++) {
         uint s = group_slot(g);
+        uvec3 c = uvec3(p1_order[s], p1_order[s + 1u], p1_order[s + 2u]);
         p1_order[s] = off.x;
         p1_order[s + 1u] = off.y;
         p1_order[s + 2u] = off.z;
         p1_order[s + 3u] = first_region + off.z;
         off += c;
     }
-    if (t == TV_WG_SIZE - 1u) { // off: the layer's totals
-        counters[TV_PVS_C_DRAW_FF] = 3u * off.x;
-        counters[TV_PVS_C_DRAW_BF] = 3u * off.y;
-        counters[TV_PVS_C_DRAW_TRIM] = 6u * off.z;
-        counters[TV_PVS_C_DRAW_UMBRA] = 6u * off.z;
-        counters[TV_PVS_C_REGIONS] = first_region + off.z;
-        counters[TV_PVS_C_P1_DONE] = 0u; // for the next layer
-    }
+    counters[TV_PVS_C_DRAW_FF] = 3u * off.x;
+    counters[TV_PVS_C_DRAW_BF] = 3u * off.y;
+    counters[TV_PVS_C_DRAW_TRIM] = 6u * off.z;
+    counters[TV_PVS_C_DRAW_UMBRA] = 6u * off.z;
+    counters[TV_PVS_C_REGIONS] = first_region + off.z;
+    counters[TV_PVS_C_P1_DONE] = 0u; // for the next layer
 }
 
+// No barrier and no shared memory: on llvmpipe both made this pass about
+// twice as slow (docs/journal/2026-12-02-repeatable.md). The group counts
+// are atomic sums (cleared before each layer), so their order is free.
 void main()
 {
-    uint i = gl_GlobalInvocationID.x, lid = gl_LocalInvocationID.x;
-    if (lid < 3u)
-        group_counts[lid] = 0u;
-    barrier();
-    uint word = i < pc.layer_count ? classify(i) : 0u;
-    if (i < pc.layer_count) {
-        p1_order[TV_PVS_ORDER_CLASS(view.list_capacity, i)] = word;
-        uint records = bitCount(word & (TV_PVS_CLASS_EDGE(0u) | TV_PVS_CLASS_EDGE(1u) | TV_PVS_CLASS_EDGE(2u)));
-        if ((word & TV_PVS_CLASS_FF) != 0u)
-            atomicAdd(group_counts[0], 1u);
-        if ((word & TV_PVS_CLASS_BF) != 0u)
-            atomicAdd(group_counts[1], 1u);
-        if (records != 0u)
-            atomicAdd(group_counts[2], records);
-    }
-    barrier();
-    if (lid < 3u)
-        p1_order[group_slot(gl_WorkGroupID.x) + lid] = group_counts[lid];
-    memoryBarrierBuffer(); // the counts before this group counts as done
-    barrier();
-    if (lid == 0u)
-        last_group = atomicAdd(counters[TV_PVS_C_P1_DONE], 1u) == gl_NumWorkGroups.x - 1u;
-    barrier();
-    if (!last_group)
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= pc.layer_count)
         return;
-    memoryBarrierBuffer(); // every group's counts, seen through its atomicAdd
-    scan();
+    uint word = classify(i), s = group_slot(gl_WorkGroupID.x);
+    p1_order[TV_PVS_ORDER_CLASS(view.list_capacity, i)] = word;
+    if ((word & TV_PVS_CLASS_FF) != 0u)
+        atomicAdd(p1_order[s], 1u);
+    if ((word & TV_PVS_CLASS_BF) != 0u)
+        atomicAdd(p1_order[s + 1u], 1u);
+    uint records = bitCount(word & (TV_PVS_CLASS_EDGE(0u) | TV_PVS_CLASS_EDGE(1u) | TV_PVS_CLASS_EDGE(2u)));
+    if (records != 0u)
+        atomicAdd(p1_order[s + 2u], records);
+    memoryBarrierBuffer(); // the counts before this invocation counts as done
+    if (atomicAdd(counters[TV_PVS_C_P1_DONE], 1u) == pc.layer_count - 1u) {
+        memoryBarrierBuffer(); // every invocation's counts, seen through its atomicAdd
+        scan();
+    }
 }

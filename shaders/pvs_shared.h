@@ -235,7 +235,7 @@
 #define TV_PVS_BIND_ORDER      25 // P1's lists in layer order (pvs_order.comp), uints; cap = view.list_capacity:
 #define TV_PVS_ORDER_SIL(i)        (i)                       // the layer's silhouette list: record slot of entry i (P2's quads)
 #define TV_PVS_ORDER_CLASS(cap, i) (3u * (cap) + (i))       // layer triangle i's TV_PVS_CLASS_* bits
-#define TV_PVS_ORDER_GROUP(cap, g) (4u * (cap) + 4u * (g))  // P1 workgroup g: FF, BF, record counts, then offsets and first region id
+#define TV_PVS_ORDER_GROUP(cap, g) (4u * (cap) + 4u * (g))  // P1 workgroup g: FF, BF, record counts (cleared per layer), then offsets and first region id
 #define TV_PVS_BINDINGS        26
 
 // Class word of a layer triangle (TV_PVS_ORDER_CLASS): which of P1's lists
@@ -276,7 +276,7 @@
 #define TV_PVS_C_REGIONS    32 // trim regions numbered so far (in this tile)
 #define TV_PVS_C_OVERFLOW_FRONTS 33
 #define TV_PVS_C_COOP_TOTAL 34 // pixel resolves sorted cooperatively
-#define TV_PVS_C_P1_DONE    35 // P1 workgroups of the layer done: the last one scans them and resets it (pvs_classify.comp)
+#define TV_PVS_C_P1_DONE    35 // P1 invocations of the layer done: the last one scans the counts and resets it (pvs_classify.comp)
 #define TV_PVS_C_COUNT      36
 
 // Fragment kinds of P2 (push constant `kind`), = TV_ENTRY_* above.
