@@ -285,7 +285,7 @@ static void copy_draw_counts(pvs_context* ctx, VkCommandBuffer cmd, uint32_t l)
                     regions);
 }
 
-/* P1 of a layer of `count` triangles: classify (its last workgroup scans
+/* P1 of a layer of `count` triangles: classify (its last invocation scans
  * the counts), then list in layer order (pvs_order.comp), so that nothing
  * P1 outputs depends on the order its invocations ran in. */
 static void record_classify(pvs_context* ctx, VkCommandBuffer cmd, uint32_t count)

@@ -139,9 +139,10 @@ void scan()
     counters[TV_PVS_C_P1_DONE] = 0u; // for the next layer
 }
 
-// No barrier and no shared memory: on llvmpipe both made this pass about
-// twice as slow (docs/journal/2026-12-02-repeatable.md). The group counts
-// are atomic sums (cleared before each layer), so their order is free.
+// No barrier and no shared memory, as before the ordering (a version that
+// counted in shared memory behind a barrier was no faster on llvmpipe,
+// docs/journal/2026-12-02-repeatable.md). The group counts are atomic sums
+// (cleared before each layer), so their order is free.
 void main()
 {
     uint i = gl_GlobalInvocationID.x;
