@@ -70,10 +70,12 @@
  * trim widths (pvs/depth_bound.h, docs/trim-width.md). */
 #define TV_PVS_DEPTH_CELL_PX 8u
 /* Pixels a width narrowed by that bound keeps beyond the exact one (up to
- * the far-plane width): the far-plane widths' slack had covered sub-pixel
- * sampling differences between the eyes and v* pixel centres; without it
- * false-negative pixels rose on builtin:city, sponza and oasago2
- * (docs/trim-width.md). */
+ * the far-plane width): without it false-negative pixels rose on
+ * builtin:city, sponza and oasago2, through two rules that sample a pixel
+ * at its centre (the umbra where a silhouette crosses the pixel, a
+ * sliver's dilated depth) and that the far-plane widths' margin had
+ * covered; the conservative fixes cost more PVS than the pixel
+ * (docs/trim-width.md, "The slack pixel"). */
 #define TV_PVS_TRIM_SLACK_PX 1.0
 /* Widest gap (scene units, metres) between two border edges that counts as
  * a crack (scn_mark_cracks): Sponza's decimated columns gape up to ~1.2 cm
