@@ -48,6 +48,7 @@ float iv_end[IV_MAX];
 int iv_run;
 uint n_out;
 float term_depth; // depth of the terminator that sealed the pixel
+bool overflow_due; // resolve_overflow is to run in finish_pixel: see there
 
 seq_entry make_entry(float depth, uint kind, uint id, int delta) { return seq_entry(depth, kind, id, -1, delta); }
 
@@ -465,9 +466,9 @@ bool carry_run(uint n)
 
 // pvs_resolve_pixel in stages, so that the cooperative variant can sort
 // between them. resolve_begin: RESOLVE_NONE (nothing to resolve),
-// RESOLVE_OVERFLOW (the overflow policy handled it) or RESOLVE_SEQUENCE
-// (gather, sort ent[0, n), resolve_intervals, sort ent[S2, S2 + m),
-// resolve_end).
+// RESOLVE_OVERFLOW (the overflow policy is due; finish_pixel runs it) or
+// RESOLVE_SEQUENCE (gather, sort ent[0, n), resolve_intervals, sort
+// ent[S2, S2 + m), resolve_end).
 #define RESOLVE_NONE 0u
 #define RESOLVE_OVERFLOW 1u
 #define RESOLVE_SEQUENCE 2u
@@ -479,10 +480,9 @@ uint resolve_begin(out bool first)
         return RESOLVE_NONE;
     if (stencil == TV_STENCIL_UNTRIMMED && cnt.z == 0u)
         return RESOLVE_NONE;
-    if (stencil == TV_STENCIL_OVERFLOW) {
-        resolve_overflow();
+    overflow_due = stencil == TV_STENCIL_OVERFLOW;
+    if (overflow_due)
         return RESOLVE_OVERFLOW;
-    }
     stencil = TV_STENCIL_TRIMMED;
     return RESOLVE_SEQUENCE;
 }
@@ -495,13 +495,13 @@ uint resolve_intervals(uint n)
     return replace_backs(n);
 }
 
-// Returns true when the overflow policy handled the pixel.
+// Returns true when the overflow policy handles the pixel (see finish_pixel).
 bool resolve_end(uint n, uint m)
 {
     float front_lost = kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_FRONT]);
     bool sealed = walk(m);
     if (front_lost < kdepth(0x7F800000u) && !(sealed && term_depth < front_lost)) {
-        resolve_overflow(); // outputs what the walk did, and more
+        overflow_due = true; // outputs what the walk did, and more
         return true;
     }
     if (sealed) {
@@ -553,7 +553,6 @@ void request_spill()
     out_reason = TV_REASON_FRONT;
 }
 
-
 void load_pixel(uint pixel)
 {
     P = pixel;
@@ -570,12 +569,15 @@ void load_pixel(uint pixel)
     n_out = 0u;
     out_reason = TV_REASON_FRONT;
     term_depth = stencil == TV_STENCIL_SEALED ? uintBitsToFloat(st.y) : 0.0;
+    overflow_due = false;
 }
 
-// Writes the pixel's state back, requests spill draws, adds the layer's
-// statistics and clears the pixel's active flag.
+// Runs the overflow policy if due, writes the pixel's state back, requests
+// spill draws, adds the layer's statistics and clears the active flag.
 void finish_pixel(uint seq_len, bool handled)
 {
+    if (overflow_due) // one inlined copy (llvmpipe), not one per stage that finds it due
+        resolve_overflow();
     bool overflowed = handled || any(greaterThan(cnt, uvec4(view.k)));
     if (cnt.x > view.k)
         request_spill();
