@@ -1,6 +1,6 @@
 #version 460
 // P2, scene triangles: vertex pulling from the FF or BF list P1 wrote (the
-// draw's vertexCount is 3 x the list length, set by P1's scan, pvs_order.comp).
+// draw's vertexCount is 3 x the list length, set by P1's scan in pvs_classify.comp).
 // With TV_PVS_KIND_WIDE the triangle is dilated by half a pixel in screen
 // space (conservative rasterisation by hand: lavapipe has no
 // VK_EXT_conservative_rasterization) into the second, "wide" visibility

@@ -257,7 +257,7 @@
 #define TV_PVS_SIL_VEC4 6
 
 // Slots of the counters buffer (uints). Four VkDrawIndirectCommand (FF, BF,
-// trim, umbra; vertexCount set by P1's scan, pvs_order.comp), one
+// trim, umbra; vertexCount set by P1's scan, pvs_classify.comp), one
 // VkDispatchIndirectCommand for P3, the active count, the two spill draws
 // (after P3, exact and dilated, of the fronts in TV_PVS_BIND_SPILL; P3 sets
 // their vertexCount from its length when a pixel needs them), the VkDispatchIndirectCommand of P3's
