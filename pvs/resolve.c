@@ -322,8 +322,8 @@ static uint32_t replace_backs(const pvs_pixel_state* s, const seq_entry* seq, ui
     for (uint32_t i = 0; i < n; i++) {
         int32_t v = seq[i].interval;
         bool valid = v >= 0 && iv->valid[v];
-        if (valid && seq[i].kind == TV_ENTRY_BACK)
-            continue;
+        if (valid && seq[i].kind == TV_ENTRY_BACK && !is_candidate(&seq[i]))
+            continue; /* a candidate back stays: the walk decides (straddled ones may be output) */
         seq2[m] = seq[i];
         seq2[m].delta = valid && iv->first[v] == i ? 1 : 0;
         if (v < 0 && seq[i].kind == TV_ENTRY_BACK && !is_candidate(&seq[i]) && lone_eroded(seq, n, i, iv->trims_lost))
@@ -354,7 +354,6 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
 {
     int32_t prefix = 0;
     float open = 0.0f, span_lo = 0.0f, span_hi = 0.0f;
-    bool face_seen = false; /* a face covering the centre, prior ones included */
     for (uint32_t i = 0; i < m; i++) {
         const seq_entry* e = &seq2[i];
         bool is_face = e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK;
@@ -372,18 +371,19 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
         }
         if (is_candidate(e)) {
             /* It only touches the pixel: visible unless hidden, never an
-             * occluder (neither a run nor a terminator). A candidate back
-             * only in front of every face at the centre: behind one, it is
-             * as likely the inside of a closed surface as a sliver seen
-             * from behind, and outputting it there cost oasago2 8 % and
-             * pul1ctf up to 16 % more PVS for no false negative fewer. */
+             * occluder (neither a run nor a terminator). Inside a validated
+             * interval a candidate front is part of the eroded surface eyes
+             * see past its edge, and so is a straddled candidate back (some
+             * eyes see its front: the side of a thin solid seen edge-on); any
+             * other back there is the inside of a closed surface. Faces the
+             * walk passed do not hide it: they are the ones it sees past
+             * (docs/pvs-edge-cases.md, "Candidates": counting them made the
+             * output depend on which layer held them). */
             bool in_valid = e->interval >= 0 && iv->valid[e->interval] && !iv->hidden[e->interval];
-            bool visible = e->kind == TV_ENTRY_BACK ? prefix == 0 && !face_seen : prefix == 0 || in_valid;
-            if (visible)
+            if (prefix == 0 || (in_valid && (e->kind == TV_ENTRY_FRONT || is_straddled(e))))
                 emit(out, n_out, e->id);
             continue;
         }
-        face_seen = face_seen || (is_face && !is_culled(e));
         if (e->kind == TV_ENTRY_FRONT && e->interval >= 0 && iv->valid[e->interval]) {
             /* Every front of a validated interval's run is visible from the
              * viewcell unless the run starts inside an earlier umbra. */

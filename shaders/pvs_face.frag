@@ -16,8 +16,8 @@
 // a candidate front, which P3 outputs where it is not hidden but never lets
 // occlude. The back of a triangle narrower than a pixel becomes a candidate
 // back the same way: such a sliver may cover no pixel centre at all, so it is
-// in no sequence otherwise (P3 outputs it only in front of every face at the
-// centre; pvs_resolve.glsl's walk).
+// in no sequence otherwise (P3 outputs it outside every hidden range;
+// pvs_resolve.glsl's walk).
 // A see-through triangle (pvs_geometry.glsl) is drawn by the dilated pass
 // only, as a candidate front at every pixel it touches, centre covered or
 // not, and writes no depth anywhere: no visibility buffer, no centre depth,

@@ -310,8 +310,8 @@ uint replace_backs(uint n)
     for (uint i = 0u; i < n; i++) {
         int v = ent[i].interval;
         bool valid = v >= 0 && iv_valid[v];
-        if (valid && ent[i].kind == TV_ENTRY_BACK)
-            continue;
+        if (valid && ent[i].kind == TV_ENTRY_BACK && !is_candidate(ent[i]))
+            continue; // resolve.c: a candidate back stays, the walk decides
         ent[S2 + m] = ent[i];
         ent[S2 + m].delta = valid && iv_first[v] == i ? 1 : 0;
         if (v < 0 && ent[i].kind == TV_ENTRY_BACK && !is_candidate(ent[i]) && lone_eroded(n, i))
@@ -335,7 +335,6 @@ bool walk(uint m)
 {
     int prefix = 0;
     float open = 0.0, span_lo = 0.0, span_hi = 0.0;
-    bool face_seen = false; // a face covering the centre, prior ones included
     for (uint i = 0u; i < m; i++) {
         seq_entry e = ent[S2 + i];
         bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
@@ -353,13 +352,11 @@ bool walk(uint m)
         }
         bool in_valid = e.interval >= 0 && iv_valid[e.interval];
         if (is_candidate(e)) { // touches the pixel only: output unless hidden, never an occluder
-            bool visible = e.kind == TV_ENTRY_BACK ? prefix == 0 && !face_seen
-                                                   : prefix == 0 || (in_valid && !iv_hidden[e.interval]);
-            if (visible)
+            // inside a validated interval: fronts and straddled backs (resolve.c)
+            if (prefix == 0 || (in_valid && !iv_hidden[e.interval] && (e.kind == TV_ENTRY_FRONT || is_straddled(e))))
                 output_id(e.id);
             continue;
         }
-        face_seen = face_seen || (is_face && !is_culled(e));
         if (e.kind == TV_ENTRY_FRONT && in_valid) {
             if (!iv_hidden[e.interval])
                 output_id(e.id);

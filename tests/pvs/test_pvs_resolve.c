@@ -31,17 +31,18 @@ static void test_candidate_fronts(void)
 #define CB(d, id) {TV_ENTRY_BACK, d, (id) | TV_ID_CANDIDATE}
 
 /* Candidate backs (the back of a triangle narrower than a pixel, touching
- * it off its centre) are output only in front of every face at the centre
- * and outside every hidden range: CB 7 is, CB 8 behind the validated
- * interval is not, where a candidate front (9) is. Neither closes an
- * interval: [F 5, B 3] stays one interval, validated by the trim at 2, so
- * F 5 does not become a terminator. */
+ * it off its centre) are output outside every hidden range: CB 7 in front
+ * of everything and CB 8 behind the validated interval's range are, CB 11
+ * inside that range is not, nor CB 6 inside a validated interval (the
+ * inside of a closed surface) where a candidate front would be. Neither
+ * closes an interval: [F 5, B 3] stays one interval, validated by the trim
+ * at 2, so F 5 does not become a terminator. */
 static void test_candidate_backs(void)
 {
     pvs_pixel_state s = {0};
-    layer_result r = RUN(s, CB(0.5f, 7), F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), CB(4.0f, 8), C(4.0f, 9),
-                         F(5.0f, 3), B(6.0f));
-    CHECK_OUT(r, 7, 1, 9, 3);
+    layer_result r = RUN(s, CB(0.5f, 7), F(1.0f, 1), T(1.2f, 1), B(1.5f), CB(2.5f, 11), U(3.0f, 1), CB(4.0f, 8),
+                         C(4.0f, 9), F(5.0f, 3), B(6.0f));
+    CHECK_OUT(r, 7, 1, 8, 9, 3);
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
     pvs_pixel_state open = {0};
     r = RUN(open, F(1.0f, 5), CB(1.5f, 6), T(2.0f, 1), B(3.0f));
@@ -60,6 +61,36 @@ static void test_candidate_backs(void)
     TV_CHECK(!pvs_kbuf_push(&k, &pages, TV_ENTRY_BACK, 99.0f, 200));
     pvs_kbuf_read(&k, &pages);
     TV_CHECK(k.back_held == TV_K_BACK && k.back_depth[TV_K_BACK / 2] == 50.0f && pages.taken == TV_K_BACK / TV_PVS_PAGE);
+}
+
+#define CBS(d, id) {TV_ENTRY_BACK, d, (id) | TV_ID_CANDIDATE | TV_ID_STRADDLED}
+#define BC(d, id) {TV_ENTRY_BACK, d, (id) | TV_ID_CULLED}
+
+/* oa:oa_dm5's lost objects (docs/journal/2026-12-02-dm5-merge.md): a solid
+ * 1 m away that eyes see past (trim 1 validates it, its back is culled) and,
+ * 6 m behind, a thin box whose sides v* sees edge-on: straddled candidate
+ * backs (some eyes see their fronts), 10 in front of the box's front face
+ * 20, 11 inside its interval (validated by the box's trim 2); 12, a
+ * double-sided sliver inside it, is the inside of a closed surface. Resolved
+ * in one layer (merged layers) or in two (the strict order, the near solid
+ * first), the output is the same. Before, one layer lost 10 (the near
+ * solid's face preceded it) and both lost 11 (dropped with the interval's
+ * back). */
+static void test_candidate_backs_layer_free(void)
+{
+    const uint32_t want[] = {1, 10, 11, 20, 30};
+    pvs_pixel_state one = {0};
+    layer_result r = RUN(one, T(1.0f, 1), F(1.0f, 1), U(1.4f, 1), BC(1.8f, 900), CBS(6.6f, 10), T(12.3f, 2),
+                         F(12.3f, 20), CBS(12.4f, 11), CB(12.45f, 12), U(12.6f, 2), BC(13.2f, 901), F(14.6f, 30),
+                         B(15.0f));
+    TV_CHECK(same_set(&r, want, 5) && one.stencil == TV_STENCIL_SEALED);
+    pvs_pixel_state two = {0};
+    layer_result a = RUN(two, T(1.0f, 1), F(1.0f, 1), U(1.4f, 1), BC(1.8f, 900));
+    CHECK_OUT(a, 1);
+    layer_result b = RUN(two, CBS(6.6f, 10), T(12.3f, 2), F(12.3f, 20), CBS(12.4f, 11), CB(12.45f, 12),
+                         U(12.6f, 2), BC(13.2f, 901), F(14.6f, 30), B(15.0f));
+    CHECK_OUT(b, 10, 11, 20, 30);
+    TV_CHECK(two.stencil == TV_STENCIL_SEALED && two.term_depth == one.term_depth);
 }
 
 /* R1: f1 t1 b1 validated (u1 at 3) -> f1 out; f2 lies inside u1, but its
@@ -380,6 +411,7 @@ int main(void)
 {
     TV_TEST_RUN(test_candidate_fronts);
     TV_TEST_RUN(test_candidate_backs);
+    TV_TEST_RUN(test_candidate_backs_layer_free);
     TV_TEST_RUN(test_figure9_r1);
     TV_TEST_RUN(test_trim_region_straddles_interval);
     TV_TEST_RUN(test_figure9_r2);
