@@ -104,7 +104,7 @@ static int scene_cells(bench_run* b, const char* spec, const tv_app_scene* s, fl
     *out = n > 0 ? calloc((size_t)n, sizeof **out) : NULL;
     for (int i = 0; *out && i < n; i++) {
         const float* dir = b->npos > 0 ? o->dir : &b->placed_dir[3 * i];
-        tv_viewcell_make(&pos[3 * i], dir, delta, o->fov, o->fov_pvs, &(*out)[i].vc);
+        tv_viewcell_make(&pos[3 * i], dir, NULL, delta, o->fov, o->fov_pvs, &(*out)[i].vc);
         for (int k = 0; k < 3; k++)
             (*out)[i].motion[k] = 2.0 * delta * (*out)[i].vc.forward[k];
     }

@@ -20,7 +20,7 @@
 
 typedef struct eval_opts {
     const char *scene, *path, *out, *method, *gt_cache, *kb_layout;
-    float pos[3], dir[3];
+    float pos[3], dir[3], up[3];
     float delta, fov, fov_pvs;
     int every, samples, k, max_cells, max_layers;
     unsigned res[2], pvs_res[2];
@@ -71,8 +71,9 @@ static int make_cells(const eval_opts* o, tv_eval_cell** out, char* scene_spec, 
 {
     if (!o->path) {
         *out = calloc(1, sizeof **out);
-        if (!*out || !tv_viewcell_make(o->pos, o->dir, o->delta, o->fov, o->fov_pvs, &(*out)->vc)) {
-            tv_log(TV_LOG_ERROR, "--dir must be non-zero and FOVs in (0, 180)");
+        if (!*out || !tv_viewcell_make(o->pos, o->dir, isnan(o->up[0]) ? NULL : o->up, o->delta, o->fov, o->fov_pvs,
+                                        &(*out)->vc)) {
+            tv_log(TV_LOG_ERROR, "--dir must be non-zero, --up not parallel to it and FOVs in (0, 180)");
             return -1;
         }
         return 1;
@@ -91,6 +92,7 @@ static tv_args_result parse(eval_opts* o, int argc, char** argv)
         {"scene", TV_ARG_STRING, &o->scene, "S", "scene (default: the path's '# scene:')"},
         {"pos", TV_ARG_VEC3, o->pos, "X,Y,Z", "one viewcell at this centre (or use --path)"},
         {"dir", TV_ARG_VEC3, o->dir, "X,Y,Z", "its view direction (default 0,0,-1)"},
+        {"up", TV_ARG_VEC3, o->up, "X,Y,Z", "its up direction, made perpendicular to --dir (default +Y)"},
         {"path", TV_ARG_STRING, &o->path, "FILE", "viewcells at the head poses of this path"},
         {"every", TV_ARG_INT, &o->every, "N", "with --path: one viewcell every N display frames at 90 Hz (default 90)"},
         {"max-cells", TV_ARG_INT, &o->max_cells, "N", "with --path: at most N viewcells (default all)"},
@@ -223,7 +225,8 @@ static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, c
 
 int tv_cmd_eval(int argc, char** argv)
 {
-    eval_opts o = {.out = "out/eval", .method = "tr", .pos = {NAN, NAN, NAN}, .dir = {0, 0, -1}, .delta = 0.1f,
+    eval_opts o = {.out = "out/eval", .method = "tr", .pos = {NAN, NAN, NAN}, .dir = {0, 0, -1},
+                   .up = {NAN, NAN, NAN}, .delta = 0.1f,
                    .fov = 60.0f, .fov_pvs = 90.0f, .every = 90, .samples = TV_ARGS_DEFAULT_SAMPLES, .res = {640, 360},
                    .pvs_res = {512, 512}, .k = TV_ARGS_DEFAULT_K,
                    .max_layers = TV_ARGS_DEFAULT_MAX_LAYERS};

@@ -72,7 +72,8 @@ static bool compute_again(pvs_method* m, const pvs_request* req, const uint32_t*
 int tv_cmd_pvs(int argc, char** argv)
 {
     const char *scene = NULL, *method = "tr", *ids_out = NULL, *layout = NULL;
-    float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
+    float pos[3] = {NAN, NAN, NAN}, dir[3] = {0, 0, -1}, up[3] = {NAN, NAN, NAN};
+    float delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
     int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS, pages = 0;
     int repeat = 1;
@@ -80,6 +81,8 @@ int tv_cmd_pvs(int argc, char** argv)
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
         {"dir", TV_ARG_VEC3, dir, "X,Y,Z", "view direction (default 0,0,-1)"},
+        {"up", TV_ARG_VEC3, up, "X,Y,Z",
+         "up direction, made perpendicular to --dir (default +Y; a replay's pvs.csv has its own)"},
         {"delta", TV_ARG_FLOAT, &delta, "M", "viewcell radius (default 0.1; tr: at most 31.7 m x tan(fov-pvs / 2))"},
         {"fov", TV_ARG_FLOAT, &fov, "DEG", "display FOV (default 60)"},
         TV_ARG_FOV_PVS(&fov_pvs),
@@ -119,8 +122,10 @@ int tv_cmd_pvs(int argc, char** argv)
         !tv_arg_require("max-layers", max_layers, max_layers >= -1, ">= -1") ||
         !tv_arg_require("repeat", repeat, repeat >= 1, ">= 1"))
         return 2;
-    if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) || !tv_viewcell_make(pos, dir, delta, fov, fov_pvs, &vc)) {
-        tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --delta >= 0 and "
+    if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) ||
+        !tv_viewcell_make(pos, dir, isnan(up[0]) ? NULL : up, delta, fov, fov_pvs, &vc)) {
+        tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --up not parallel to it, "
+               "--delta >= 0 and "
                "FOVs in (0, 180) (see trimvr pvs --help)");
         return 2;
     }

@@ -62,10 +62,15 @@ static double pvs_fraction(const replay_state* st)
     return n ? (double)st->pipe.current.r.count / n : 0.0;
 }
 
-static void log_pvs(replay_state* st)
+static bool log_pvs(replay_state* st, char* err, size_t err_size)
 {
     const tv_pvs_result* r = &st->pipe.current.r;
-    tv_replay_log_pvs(st->log, r->compute_ms, r->vc.frusta, r->vc.clamped, r->vc.whole_scene);
+    tv_pvs_row row = {.id = r->id, .t_request = r->t_request, .t_available = r->t_available, .vc = &r->vc,
+                      .tris = r->count, .compute_ms = r->compute_ms};
+    if (tv_replay_log_pvs(st->log, &row))
+        return true;
+    snprintf(err, err_size, "%s/pvs.csv: write failed", st->d->out_dir);
+    return false;
 }
 
 /* One frames.csv row for eye e; `render`: draw and compare the images, else
@@ -183,8 +188,8 @@ static bool run_loop(replay_state* st, uint64_t frames, char* err, size_t err_si
         int stepped = tv_pvs_pipeline_step(&st->pipe, t_submit, frame_s, true, err, err_size);
         if (stepped < 0)
             return false;
-        if (stepped == 1)
-            log_pvs(st);
+        if (stepped == 1 && !log_pvs(st, err, err_size))
+            return false;
 
         pred_pose predicted_head;
         tv_pvs_pipeline_predicted(&st->pipe, t_submit, &predicted_head);
@@ -251,8 +256,7 @@ static bool first_pvs(replay_state* st, char* err, size_t err_size)
     feed_samples(st, t0);
     if (!tv_pvs_pipeline_first(&st->pipe, t0, 1.0 / st->sim.desc.display_rate_hz, err, err_size))
         return false;
-    log_pvs(st);
-    return true;
+    return log_pvs(st, err, err_size);
 }
 
 static void teardown(replay_state* st)

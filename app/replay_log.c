@@ -28,8 +28,8 @@ static bool series_push(series* s, double x)
 }
 
 struct tv_replay_log {
-    FILE* csv;
-    char csv_name[4200];
+    FILE *csv, *pvs_csv;
+    char csv_name[4200], pvs_csv_name[4200];
     series psnr, ssim, fn, pvs_fraction, static_fraction, dynamic_fraction, dynamic_fn, delta, fov, render_full,
         render_pvs, pvs_ms, pred_pos, pred_rot, pose_age;
     uint64_t rows, misses, identical, coverage_frames, omni_pvs, clamped_pvs, whole_scene_frames, whole_scene_pvs;
@@ -43,6 +43,22 @@ static const char* k_header =
     "psnr_db,fn_pixels,diff_pixels,pvs_compute_ms,render_pvs_ms,render_full_ms,ssim,rendered,pvs_frusta,whole_scene,"
     "dynamic_pvs_fraction,dynamic_fn_pixels\n";
 
+/* pvs.csv: the viewcell as `trimvr pvs --pos --dir --up --delta --fov-pvs`
+ * takes it (docs/replay.md). */
+static const char* k_pvs_header =
+    "pvs_id,t_request,t_available,t_begin,t_end,v0_x,v0_y,v0_z,forward_x,forward_y,forward_z,up_x,up_y,up_z,"
+    "delta_m,fov_pvs_deg,apex_offset_m,frusta,clamped,whole_scene,pvs_tris,compute_ms\n";
+
+static FILE* open_csv(const char* name, const char* header)
+{
+    FILE* f = fopen(name, "w");
+    if (f && (fputs(header, f) < 0 || fflush(f) != 0)) {
+        fclose(f);
+        return NULL;
+    }
+    return f;
+}
+
 tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size)
 {
     tv_replay_log* log = calloc(1, sizeof *log);
@@ -51,9 +67,11 @@ tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size)
         return NULL;
     }
     snprintf(log->csv_name, sizeof log->csv_name, "%s/frames.csv", dir);
-    log->csv = fopen(log->csv_name, "w");
-    if (!log->csv || fputs(k_header, log->csv) < 0 || fflush(log->csv) != 0) {
-        snprintf(err, err_size, "%s: cannot write", log->csv_name);
+    snprintf(log->pvs_csv_name, sizeof log->pvs_csv_name, "%s/pvs.csv", dir);
+    log->csv = open_csv(log->csv_name, k_header);
+    log->pvs_csv = log->csv ? open_csv(log->pvs_csv_name, k_pvs_header) : NULL;
+    if (!log->pvs_csv) {
+        snprintf(err, err_size, "%s: cannot write", log->csv ? log->pvs_csv_name : log->csv_name);
         if (log->csv)
             fclose(log->csv);
         free(log);
@@ -117,15 +135,25 @@ void tv_replay_log_coverage(tv_replay_log* log, bool covered, bool whole_scene, 
     }
 }
 
-void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta, bool clamped, bool whole_scene)
+bool tv_replay_log_pvs(tv_replay_log* log, const tv_pvs_row* r)
 {
-    if (whole_scene) {
+    const pred_viewcell* vc = r->vc;
+    /* %.9g: a float's every digit, so the viewcell is computed again bit for bit */
+    int n = fprintf(log->pvs_csv,
+                    "%u,%.6f,%.6f,%.6f,%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,"
+                    "%d,%d,%d,%u,%.3f\n",
+                    r->id, r->t_request, r->t_available, vc->t_begin, vc->t_end, vc->v0[0], vc->v0[1], vc->v0[2],
+                    vc->forward[0], vc->forward[1], vc->forward[2], vc->up[0], vc->up[1], vc->up[2], vc->delta,
+                    vc->fov_pvs_deg, vc->z, vc->frusta, vc->clamped ? 1 : 0, vc->whole_scene ? 1 : 0, r->tris,
+                    vc->whole_scene ? 0.0 : r->compute_ms);
+    if (vc->whole_scene)
         log->whole_scene_pvs++;
-        return;
+    else {
+        series_push(&log->pvs_ms, r->compute_ms);
+        log->omni_pvs += vc->frusta > 1;
+        log->clamped_pvs += vc->clamped;
     }
-    series_push(&log->pvs_ms, compute_ms);
-    log->omni_pvs += frusta > 1;
-    log->clamped_pvs += clamped;
+    return n >= 0 && fflush(log->pvs_csv) == 0;
 }
 
 void tv_replay_log_prediction(tv_replay_log* log, double pos_err_m, double rot_err_deg)
@@ -259,6 +287,7 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(table, " wall time             %8.1f s\n", m->wall_s);
     }
     fclose(log->csv);
+    fclose(log->pvs_csv);
     free_series(log);
     free(log);
     return ok;

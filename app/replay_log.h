@@ -1,12 +1,14 @@
 /* replay_log.h - the replay's outputs: frames.csv (one row per evaluated
  * frame and eye, plus unrendered rows for uncovered frames that were not
  * evaluated; flushed row by row so an interrupted run keeps every finished
- * frame), the running summary, summary.json and the end-of-run table. Column
- * meanings: docs/replay.md. */
+ * frame), pvs.csv (one row per PVS taken into use: its viewcell, exactly
+ * enough to compute it again with `trimvr pvs`), the running summary,
+ * summary.json and the end-of-run table. Column meanings: docs/replay.md. */
 #ifndef TRIMVR_APP_REPLAY_LOG_H
 #define TRIMVR_APP_REPLAY_LOG_H
 
 #include "pose.h"
+#include "viewcell.h"
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -44,7 +46,17 @@ typedef struct tv_frame_row {
 
 typedef struct tv_replay_log tv_replay_log;
 
-/* Creates DIR/frames.csv with its header. NULL (message in err) on failure. */
+/* One PVS taken into use. */
+typedef struct tv_pvs_row {
+    uint32_t id;               /* the request's sequence number (frames.csv pvs_id) */
+    double t_request, t_available;
+    const pred_viewcell* vc;   /* what it was computed for */
+    uint32_t tris;
+    double compute_ms;
+} tv_pvs_row;
+
+/* Creates DIR/frames.csv and DIR/pvs.csv with their headers. NULL (message
+ * in err) on failure. */
 tv_replay_log* tv_replay_log_open(const char* dir, char* err, size_t err_size);
 
 /* Appends and flushes one row; accumulates the summary (rendered rows
@@ -58,9 +70,10 @@ bool tv_replay_log_row(tv_replay_log* log, const tv_frame_row* row);
 void tv_replay_log_coverage(tv_replay_log* log, bool covered, bool whole_scene, double pvs_fraction, double delta_m,
                             double fov_pvs_deg);
 
-/* Per-PVS accounting (once per delivered PVS; a whole-scene one is only
- * counted, its listing time is no PVS compute time). */
-void tv_replay_log_pvs(tv_replay_log* log, double compute_ms, int frusta, bool clamped, bool whole_scene);
+/* Per-PVS accounting and its pvs.csv row, flushed (once per delivered PVS;
+ * a whole-scene one is only counted, its listing time is no PVS compute
+ * time). False on a write error. */
+bool tv_replay_log_pvs(tv_replay_log* log, const tv_pvs_row* row);
 
 /* Per display frame (not only evaluated ones): prediction error of the head
  * at the frame time relative to the PVS request's prediction, for the p99s. */
@@ -84,7 +97,7 @@ typedef struct tv_replay_meta {
 } tv_replay_meta;
 
 /* Writes DIR/summary.json and prints the one-screen table to `table`
- * (may be NULL). Closes frames.csv and frees the log. */
+ * (may be NULL). Closes frames.csv and pvs.csv and frees the log. */
 bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_meta* meta, FILE* table,
                           char* err, size_t err_size);
 

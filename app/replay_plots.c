@@ -52,7 +52,7 @@ void tv_worst_frame_offer(tv_worst_frame* w, double psnr_db, uint64_t frame, int
 static const char* const k_outputs[] = {
     "frames.csv",    "summary.json",   "worst_full.png",   "worst_pvs.png",      "worst_diff.png",
     "plots.gp",      "plot_psnr.png",  "plot_fn_pixels.png", "plot_pvs_size.png", "plot_delta.png",
-    "plot_prediction_error.png", "plot_timings.png"};
+    "plot_prediction_error.png", "plot_timings.png", "pvs.csv"};
 
 void tv_replay_remove_outputs(const char* dir)
 {

@@ -14,8 +14,8 @@ static void finish(pred_viewcell* vc, float delta, float fov_deg, float fov_pvs_
         vc->apex[i] = vc->v0[i] - vc->z * vc->forward[i];
 }
 
-bool tv_viewcell_make(const float pos[3], const float dir[3], float delta, float fov_deg, float fov_pvs_deg,
-                      pred_viewcell* out)
+bool tv_viewcell_make(const float pos[3], const float dir[3], const float* up, float delta, float fov_deg,
+                      float fov_pvs_deg, pred_viewcell* out)
 {
     float len = sqrtf(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     if (!(len > 0.0f) || !(fov_deg > 0.0f && fov_deg < 180.0f) || !(fov_pvs_deg > 0.0f && fov_pvs_deg < 180.0f) ||
@@ -24,13 +24,19 @@ bool tv_viewcell_make(const float pos[3], const float dir[3], float delta, float
     memset(out, 0, sizeof *out);
     float f[3] = {dir[0] / len, dir[1] / len, dir[2] / len};
     float ref[3] = {0.0f, 1.0f, 0.0f};
-    if (fabsf(f[1]) > 0.999f) { /* looking straight up or down: any horizontal up will do */
+    if (up) {
+        for (int i = 0; i < 3; i++)
+            ref[i] = up[i];
+    } else if (fabsf(f[1]) > 0.999f) { /* looking straight up or down: any horizontal up will do */
         ref[1] = 0.0f;
         ref[2] = 1.0f;
     }
+    float rl = sqrtf(ref[0] * ref[0] + ref[1] * ref[1] + ref[2] * ref[2]);
     float d = ref[0] * f[0] + ref[1] * f[1] + ref[2] * f[2];
     float u[3] = {ref[0] - d * f[0], ref[1] - d * f[1], ref[2] - d * f[2]};
     float ul = sqrtf(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if (!(ul > 1.75e-3f * rl)) /* sin(0.1 degree): no direction to turn the frustum by */
+        return false;
     for (int i = 0; i < 3; i++) {
         out->v0[i] = pos[i];
         out->forward[i] = f[i];

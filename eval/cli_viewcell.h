@@ -10,11 +10,14 @@
 #include <stdbool.h>
 
 /* Builds the double-cone viewcell at pos looking along dir (any length > 0),
- * up = world +Y made perpendicular (world +Z when dir is vertical), radius
- * delta, display FOV fov_deg and PVS FOV fov_pvs_deg (square frustum).
- * False when dir is zero or an angle is out of (0, 180). */
-bool tv_viewcell_make(const float pos[3], const float dir[3], float delta, float fov_deg, float fov_pvs_deg,
-                      pred_viewcell* out);
+ * up = `up` made perpendicular to dir, or when up is NULL world +Y (world +Z
+ * when dir is vertical), radius delta, display FOV fov_deg and PVS FOV
+ * fov_pvs_deg (square frustum). The up vector turns the square PVS frustum
+ * about dir, so a replay's viewcell (its pvs.csv) is reproduced only with
+ * its own up. False when dir is zero, up is within 0.1 degree of parallel to
+ * it, or an angle is out of (0, 180). */
+bool tv_viewcell_make(const float pos[3], const float dir[3], const float* up, float delta, float fov_deg,
+                      float fov_pvs_deg, pred_viewcell* out);
 
 /* The use window of these viewcells (what scenes with movers are sampled
  * over): the replay's default, one 50 ms latency plus one 90 Hz frame, from

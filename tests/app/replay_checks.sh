@@ -14,9 +14,29 @@
 #       as many frames as frames.csv has complete rows, and no file of the older run left
 #   replay_checks.sh sigint-render DIR SECONDS command...  SIGINT mid-run of trimvr render: non-zero
 #       exit, "interrupted" on stderr, frames.csv rows complete
+#   replay_checks.sh pvs-again DIR TRIMVR SCENE pvs-option...  pvs.csv's last single-frustum PVS computed
+#       again by `trimvr pvs` from its row (centre, direction, up, delta, PVS FOV): the same triangle count
 set -u
 mode=$1
 shift
+
+# pvs_again DIR TRIMVR SCENE pvs-option...: see the usage above
+pvs_again() {
+    f=$1/pvs.csv
+    trimvr=$2
+    scene=$3
+    shift 3
+    [ -f "$f" ] || fail "$f missing"
+    row=$(awk -F, 'NR > 1 && $18 == 1 && $20 == 0 { r = $0 } END { print r }' "$f")
+    [ -n "$row" ] || fail "$f: no single-frustum PVS"
+    args=$(echo "$row" | awk -F, '{ printf "--pos %s,%s,%s --dir %s,%s,%s --up %s,%s,%s --delta %s --fov-pvs %s", \
+        $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16 }')
+    want=$(echo "$row" | cut -d, -f21)
+    # shellcheck disable=SC2086 # args holds separate options
+    got=$("$trimvr" pvs --scene "$scene" $args "$@" 2>/dev/null | awk '/^PVS \(/ { print $3 }')
+    [ "$got" = "$want" ] || fail "pvs.csv row $(echo "$row" | cut -d, -f1): trimvr pvs $args gives '$got' triangles, the replay had $want"
+    echo "ok: PVS $(echo "$row" | cut -d, -f1) computed again: $got triangles"
+}
 
 fail() {
     echo "FAIL: $*"
@@ -70,6 +90,9 @@ check_sigint() {
 }
 
 case $mode in
+pvs-again)
+    pvs_again "$@"
+    ;;
 summary)
     dir=$1
     shift
