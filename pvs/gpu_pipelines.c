@@ -99,8 +99,7 @@ static bool create_rasters(pvs_context* ctx, char* err, size_t err_size)
     bool ok = m[0] && m[1] && m[2] && m[3] &&
               create_raster(ctx, m[0], m[1], true, &ctx->pipelines[PVS_PIPE_FF], err, err_size) &&
               create_raster(ctx, m[0], m[1], true, &ctx->pipelines[PVS_PIPE_BF], err, err_size) &&
-              create_raster(ctx, m[2], m[3], false, &ctx->pipelines[PVS_PIPE_TRIM], err, err_size) &&
-              create_raster(ctx, m[2], m[3], false, &ctx->pipelines[PVS_PIPE_UMBRA], err, err_size);
+              create_raster(ctx, m[2], m[3], false, &ctx->pipelines[PVS_PIPE_QUAD], err, err_size);
     for (int i = 0; i < 4; i++) {
         if (m[i])
             vkDestroyShaderModule(r->device, m[i], NULL);
