@@ -6,7 +6,7 @@
 #include "pvs_kbuffer.glsl"
 
 layout(location = 0) flat in uint v_region;
-layout(location = 1) noperspective in vec3 v_inv_w;
+layout(location = 1) in vec3 v_w_over; // pvs_quad.vert
 
 layout(location = 0) out uint o_unused; // colour writes are masked off
 
@@ -24,8 +24,9 @@ void main()
     uint p = pvs_pixel();
     if (pvs_sealed(p))
         return;
-    push_trim(p, pvs_depth());      // the midpoint
-    push_trim(p, 1.0 / v_inv_w.x); // the nearer plane
-    push_trim(p, 1.0 / v_inv_w.y); // the farther plane
-    pvs_push(p, TV_PVS_KIND_UMBRA, 1.0 / v_inv_w.z, v_region);
+    float depth = pvs_depth();
+    push_trim(p, depth);              // the midpoint
+    push_trim(p, depth / v_w_over.x); // the nearer plane
+    push_trim(p, depth / v_w_over.y); // the farther plane
+    pvs_push(p, TV_PVS_KIND_UMBRA, depth / v_w_over.z, v_region);
 }

@@ -59,9 +59,10 @@
  * overflowed (oa:czest2ctf: PVS 2 -> 28 % of the scene). Twice
  * TV_PVS_TRIM_NUDGE, so a trim in the twin's plane still lies inside. */
 #define TV_PVS_CULLED_NUDGE 2e-5
-/* Raster far plane relative to the PVS far plane: the umbra quads' far
- * corners lie exactly on the latter and must not be clipped
- * (pvs/gpu_compute.c); pvs_quad.frag drops the trim depths beyond it. */
+/* Raster far plane relative to the PVS far plane (pvs/gpu_compute.c), 1 %
+ * further: it kept the umbra quads' far corners, which lie on the latter,
+ * when the umbrae had a draw of their own; pvs_quad.frag drops the trim
+ * depths beyond it, as the rasteriser clipped the trims' own draws. */
 #define TV_PVS_RASTER_FAR_SCALE 1.01
 
 /* The trim drawn at the farther plane depth is drawn only for silhouettes
