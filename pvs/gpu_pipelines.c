@@ -66,7 +66,7 @@ static bool create_compute(pvs_context* ctx, const uint32_t* code, size_t size,
 }
 
 /* vis: the scene-triangle pipelines depth-test and write the visibility
- * buffer; the quad pipelines only feed k-buffers from the fragment shader
+ * buffer; the quad pipeline only feeds k-buffers from the fragment shader
  * (no depth test: every fragment must reach its list). Back faces take part
  * in the visibility buffer because the renderer does not cull them: the
  * back of a single-sided quad is what an eye sees there. */
