@@ -13,10 +13,6 @@
 
 #include <cglm/cglm.h>
 
-/* Raster far plane relative to the PVS far plane: the umbra quads' far
- * corners lie exactly on the latter and must not be clipped. */
-#define PVS_RASTER_FAR_SCALE 1.01f
-
 float pvs_max_apex_offset(float near_m)
 {
     if (!(near_m > 0.0f))
@@ -64,7 +60,7 @@ rnd_camera pvs_apex_camera(const pvs_context* ctx, const pvs_viewcell* vc)
     glm_vec3_normalize(f);
     float z = apex_offset(vc);
     rnd_camera cam = {.fov_y_deg = fov_y_deg(ctx, vc), .near_m = ctx->near_m,
-                      .far_m = far_dist(vc) * PVS_RASTER_FAR_SCALE};
+                      .far_m = far_dist(vc) * (float)TV_PVS_RASTER_FAR_SCALE};
     for (int i = 0; i < 3; i++)
         cam.position[i] = vc->v0[i] - z * f[i];
     versor q;
@@ -170,10 +166,9 @@ static void reset_layer_counters(pvs_context* ctx, VkCommandBuffer cmd)
     vkCmdFillBuffer(cmd, ctx->buffers[TV_PVS_BIND_ORDER].buffer, TV_PVS_ORDER_GROUP(ctx->list_capacity, 0) * 4,
                     VK_WHOLE_SIZE, 0); /* P1's workgroup counts */
     uint32_t c[TV_PVS_C_PER_LAYER] = {0};
-    for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_UMBRA; d += 4)
+    for (uint32_t d = TV_PVS_C_DRAW_FF; d <= TV_PVS_C_DRAW_TRIM; d += 4)
         c[d + 1] = 1; /* instanceCount */
     c[TV_PVS_C_DRAW_SPILL + 1] = c[TV_PVS_C_DRAW_SPILL_WIDE + 1] = 1;
-    c[TV_PVS_C_DRAW_TRIM + 1] = 3; /* midpoint, nearer and farther trim depths (pvs_quad.vert) */
     c[TV_PVS_C_DISPATCH + 1] = c[TV_PVS_C_DISPATCH + 2] = 1;
     c[TV_PVS_C_DISPATCH_COOP + 1] = c[TV_PVS_C_DISPATCH_COOP + 2] = 1;
     vkCmdUpdateBuffer(cmd, ctx->buffers[TV_PVS_BIND_COUNTERS].buffer, 0, sizeof c, c);
@@ -233,8 +228,7 @@ static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
         draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | wide, TV_PVS_C_DRAW_FF);
         draw_indirect(ctx, cmd, PVS_PIPE_BF, TV_PVS_KIND_BACK | wide, TV_PVS_C_DRAW_BF);
         if (!vis) {
-            draw_indirect(ctx, cmd, PVS_PIPE_TRIM, TV_PVS_KIND_TRIM, TV_PVS_C_DRAW_TRIM);
-            draw_indirect(ctx, cmd, PVS_PIPE_UMBRA, TV_PVS_KIND_UMBRA, TV_PVS_C_DRAW_UMBRA);
+            draw_indirect(ctx, cmd, PVS_PIPE_QUAD, TV_PVS_KIND_TRIM, TV_PVS_C_DRAW_TRIM);
         }
     }
     vkCmdEndRendering(cmd);

@@ -46,7 +46,7 @@ _Static_assert(offsetof(pvs_push, kind) == 12 && sizeof(pvs_push) == 16,
                "pvs_push must match pvs_push_block in pvs_common.glsl");
 
 enum { PVS_PIPE_CLASSIFY, PVS_PIPE_ORDER, PVS_PIPE_RESOLVE, PVS_PIPE_RESOLVE_GROUP, PVS_PIPE_GATHER, PVS_PIPE_FF,
-       PVS_PIPE_BF, PVS_PIPE_TRIM, PVS_PIPE_UMBRA, PVS_PIPE_COUNT };
+       PVS_PIPE_BF, PVS_PIPE_QUAD, PVS_PIPE_COUNT };
 
 /* Buffers indexed by their binding (TV_PVS_BIND_*; VIS_IDS and VIS_WIDE
  * are images). */

@@ -66,7 +66,7 @@ static bool create_compute(pvs_context* ctx, const uint32_t* code, size_t size,
 }
 
 /* vis: the scene-triangle pipelines depth-test and write the visibility
- * buffer; the quad pipelines only feed k-buffers from the fragment shader
+ * buffer; the quad pipeline only feeds k-buffers from the fragment shader
  * (no depth test: every fragment must reach its list). Back faces take part
  * in the visibility buffer because the renderer does not cull them: the
  * back of a single-sided quad is what an eye sees there. */
@@ -99,8 +99,7 @@ static bool create_rasters(pvs_context* ctx, char* err, size_t err_size)
     bool ok = m[0] && m[1] && m[2] && m[3] &&
               create_raster(ctx, m[0], m[1], true, &ctx->pipelines[PVS_PIPE_FF], err, err_size) &&
               create_raster(ctx, m[0], m[1], true, &ctx->pipelines[PVS_PIPE_BF], err, err_size) &&
-              create_raster(ctx, m[2], m[3], false, &ctx->pipelines[PVS_PIPE_TRIM], err, err_size) &&
-              create_raster(ctx, m[2], m[3], false, &ctx->pipelines[PVS_PIPE_UMBRA], err, err_size);
+              create_raster(ctx, m[2], m[3], false, &ctx->pipelines[PVS_PIPE_QUAD], err, err_size);
     for (int i = 0; i < 4; i++) {
         if (m[i])
             vkDestroyShaderModule(r->device, m[i], NULL);

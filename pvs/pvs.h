@@ -89,7 +89,7 @@ float pvs_max_apex_offset(float near_m);
 typedef struct pvs_layer_stats {
     uint32_t triangles;          /* in the layer (P1's input) */
     uint32_t fronts, backs;      /* triangles P1 passed to P2's draws (inside the frustum) */
-    uint32_t silhouettes;        /* trim regions: a trim quad (drawn 3 times) and an umbra quad each */
+    uint32_t silhouettes;        /* trim regions: one quad each, for up to 3 trim depths and an umbra */
     uint64_t active_pixels;      /* pixels P3 resolved */
     uint64_t sequence_entries;   /* trim-sequence entries at those pixels (P3's sort input) */
     uint64_t overflow_pixels;    /* of those, resolved by the overflow policy */

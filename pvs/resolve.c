@@ -213,8 +213,8 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
 }
 
 /* Whether trim seq[i]'s region meets the depth range [lo, hi] at this pixel.
- * P1 draws a trim quad up to three times: at the midpoint of its solid's two
- * planes, at the nearer and (grazing fronts only) at the farther one, those
+ * P2 puts a trim quad's fragments at up to three depths: the midpoint of
+ * its solid's two planes, at the nearer and (grazing fronts only) at the farther one, those
  * two moved TV_PVS_TRIM_NUDGE towards the other. The solid lies between the
  * planes, so the region meets a range its fragments overlap or straddle (a
  * thin solid's interval can fall between two draws), and a range that

@@ -134,7 +134,6 @@ void scan()
     counters[TV_PVS_C_DRAW_FF] = 3u * off.x;
     counters[TV_PVS_C_DRAW_BF] = 3u * off.y;
     counters[TV_PVS_C_DRAW_TRIM] = 6u * off.z;
-    counters[TV_PVS_C_DRAW_UMBRA] = 6u * off.z;
     counters[TV_PVS_C_REGIONS] = first_region + off.z;
     counters[TV_PVS_C_P1_DONE] = 0u; // for the next layer
 }

@@ -59,6 +59,11 @@
  * overflowed (oa:czest2ctf: PVS 2 -> 28 % of the scene). Twice
  * TV_PVS_TRIM_NUDGE, so a trim in the twin's plane still lies inside. */
 #define TV_PVS_CULLED_NUDGE 2e-5
+/* Raster far plane relative to the PVS far plane (pvs/gpu_compute.c), 1 %
+ * further: it kept the umbra quads' far corners, which lie on the latter,
+ * when the umbrae had a draw of their own; pvs_quad.frag drops the trim
+ * depths beyond it, as the rasteriser clipped the trims' own draws. */
+#define TV_PVS_RASTER_FAR_SCALE 1.01
 
 /* The trim drawn at the farther plane depth is drawn only for silhouettes
  * whose front triangle v* sees within this cosine of edge-on (beyond 60
@@ -256,8 +261,9 @@
 // depths; pvs_trim_depth).
 #define TV_PVS_SIL_VEC4 6
 
-// Slots of the counters buffer (uints). Four VkDrawIndirectCommand (FF, BF,
-// trim, umbra; vertexCount set by P1's scan, pvs_classify.comp), one
+// Slots of the counters buffer (uints). Three VkDrawIndirectCommand (FF, BF,
+// trim and umbra quads; vertexCount set by P1's scan, pvs_classify.comp;
+// slots 12-15 are free), one
 // VkDispatchIndirectCommand for P3, the active count, the two spill draws
 // (after P3, exact and dilated, of the fronts in TV_PVS_BIND_SPILL; P3 sets
 // their vertexCount from its length when a pixel needs them), the VkDispatchIndirectCommand of P3's
@@ -267,7 +273,6 @@
 #define TV_PVS_C_DRAW_FF    0
 #define TV_PVS_C_DRAW_BF    4
 #define TV_PVS_C_DRAW_TRIM  8
-#define TV_PVS_C_DRAW_UMBRA 12
 #define TV_PVS_C_DISPATCH   16
 #define TV_PVS_C_ACTIVE     19 // active pixels of the current layer
 #define TV_PVS_C_DRAW_SPILL 20
