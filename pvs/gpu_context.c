@@ -277,6 +277,28 @@ static bool mark_cracks(const scn_scene* scene, const uint32_t* indices, uint32_
     return true;
 }
 
+_Static_assert(TV_ADJ_REST == SCN_EDGE_REST, "the shaders read scn_join_rest_edges' flag");
+
+/* Border edges resting on an opaque face become TV_ADJ_REST | face, after
+ * the cracks (which stay always-silhouettes). */
+static bool join_rest_edges(const scn_scene* scene, const uint32_t* ids, const uint32_t* indices, uint32_t count,
+                            uint32_t* adjacency, char* err, size_t err_size)
+{
+    uint8_t* solid = malloc(count ? count : 1);
+    if (!solid) {
+        snprintf(err, err_size, "pvs: out of memory for the rest edges of %s", scene->name);
+        return false;
+    }
+    for (uint32_t c = 0; c < count; c++)
+        solid[c] = scene->materials[scene->tri_material[ids[c]]].alpha_mode == SCN_ALPHA_OPAQUE;
+    double t0 = tv_now_ms();
+    size_t n = scn_join_rest_edges(adjacency, indices, count, scene->positions, solid);
+    tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges rest on an opaque face (%.0f ms)", scene->name, n,
+           tv_now_ms() - t0);
+    free(solid);
+    return true;
+}
+
 /* Whether triangle t can occlude: static and opaque. Moving and
  * SCN_ALPHA_BLEND triangles are see-through (pvs_geometry.glsl). */
 static bool occluder(const scn_scene* scene, uint32_t t)
@@ -313,12 +335,15 @@ static bool occluder_adjacency(const scn_scene* scene, const uint32_t* remap, ui
                scene->name, joined);
         ok = mark_cracks(scene, indices, n, compact, err, err_size);
     }
+    if (ok)
+        ok = join_rest_edges(scene, ids, indices, n, compact, err, err_size);
     for (size_t i = 0; ok && i < 3 * (size_t)scene->triangle_count; i++)
         adjacency[i] = SCN_EDGE_BORDER;
     for (uint32_t c = 0; ok && c < n; c++) {
         for (uint32_t e = 0; e < 3; e++) {
             uint32_t other = compact[3 * (size_t)c + e];
-            adjacency[3 * (size_t)ids[c] + e] = other < TV_ADJ_CRACK ? ids[other] : other;
+            adjacency[3 * (size_t)ids[c] + e] = other >= TV_ADJ_CRACK ? other
+                                                : (other & TV_ADJ_REST) | ids[other & ~TV_ADJ_REST];
         }
     }
     free(ids);

@@ -5,8 +5,9 @@
 
 #include "weld.h"
 
-static bool front_facing(const float* positions, const uint32_t* indices, uint32_t tri,
-                         const float point[3])
+/* Which side of the triangle's plane the point lies on: > 0 its front, < 0
+ * its back, 0 on the plane or degenerate. */
+static double facing(const float* positions, const uint32_t* indices, uint32_t tri, const float point[3])
 {
     const float* a = positions + 3u * indices[3u * tri];
     const float* b = positions + 3u * indices[3u * tri + 1];
@@ -18,7 +19,12 @@ static bool front_facing(const float* positions, const uint32_t* indices, uint32
         w[i] = (double)point[i] - a[i];
     }
     double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    return n[0] * w[0] + n[1] * w[1] + n[2] * w[2] > 0.0;
+    return n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
+}
+
+static bool front_facing(const float* positions, const uint32_t* indices, uint32_t tri, const float point[3])
+{
+    return facing(positions, indices, tri, point) > 0.0;
 }
 
 size_t pvs_silhouettes_bound(size_t triangle_count)
@@ -34,11 +40,20 @@ size_t pvs_find_silhouettes(pvs_silhouette* out, const float* positions, const u
     size_t n = 0;
     for (size_t i = 0; i < count; i++) {
         uint32_t t = tri_ids ? tri_ids[i] : (uint32_t)i;
-        bool front = front_facing(positions, indices, t, point);
+        double side = facing(positions, indices, t, point);
+        bool front = side > 0.0;
         for (uint32_t e = 0; e < 3; e++) {
             uint32_t other = adjacency[3u * t + e];
-            bool silhouette = other == SCN_EDGE_BORDER || other == SCN_EDGE_NONMANIFOLD ||
-                              (front && !front_facing(positions, indices, other, point));
+            bool silhouette;
+            if (other == SCN_EDGE_BORDER || other == SCN_EDGE_NONMANIFOLD) {
+                silhouette = true;
+            } else if (other & SCN_EDGE_REST) {
+                /* no edge of the face rested on names it: t does, both ways */
+                double f = facing(positions, indices, other & ~SCN_EDGE_REST, point);
+                silhouette = !((side > 0.0 && f > 0.0) || (side < 0.0 && f < 0.0));
+            } else {
+                silhouette = front && !front_facing(positions, indices, other, point);
+            }
             if (silhouette)
                 out[n++] = (pvs_silhouette){t, e};
         }

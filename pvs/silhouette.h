@@ -6,7 +6,10 @@
  * a polygon soup's open edges are where an occluder ends). Adjacency comes
  * from scn_build_adjacency (scene/weld.h): adjacency[3t+e] is the triangle
  * across edge e (corner e -> corner (e+1)%3) of t, SCN_EDGE_BORDER or
- * SCN_EDGE_NONMANIFOLD.
+ * SCN_EDGE_NONMANIFOLD, or SCN_EDGE_REST | f for a border resting on face f
+ * (scn_join_rest_edges): a silhouette unless t and f both face the point or
+ * both face away from it, named from t (its third corner on the occluder
+ * side) as a border is.
  */
 #ifndef TRIMVR_PVS_SILHOUETTE_H
 #define TRIMVR_PVS_SILHOUETTE_H

@@ -2,6 +2,8 @@
  * across a narrow gap (see scn_mark_cracks in weld.h). */
 #include "weld.h"
 
+#include "cell_hash.h"
+
 #include <assert.h>
 #include <cglm/cglm.h>
 #include <math.h>
@@ -21,25 +23,6 @@ typedef struct crack_edge {
     vec3 p0, p1;
     uint32_t tri, corner;
 } crack_edge;
-
-typedef struct crack_cell {
-    uint64_t key;
-    uint32_t edge;
-} crack_cell;
-
-static uint64_t cell_key(const int32_t c[3])
-{
-    uint64_t h = 1469598103934665603ull;
-    for (int i = 0; i < 3; i++)
-        h = (h ^ (uint32_t)c[i]) * 1099511628211ull;
-    return h;
-}
-
-static int compare_cell(const void* a, const void* b)
-{
-    uint64_t x = ((const crack_cell*)a)->key, y = ((const crack_cell*)b)->key;
-    return (x > y) - (x < y);
-}
 
 /* Points along an edge no farther apart than half a cell, so that every
  * cell the segment passes through holds one of them. */
@@ -99,7 +82,7 @@ static bool alongside(crack_edge* e, crack_edge* f, float max_gap)
 /* Whether a border edge of another triangle runs along edges[i]: the edges
  * in the cells around its samples, each tested once (tested[] holds the
  * last edge each was tested against). */
-static bool has_partner(crack_edge* edges, uint32_t i, const crack_cell* cells, size_t m, uint32_t* tested,
+static bool has_partner(crack_edge* edges, uint32_t i, const scn_cell* cells, size_t m, uint32_t* tested,
                         float cell, float max_gap)
 {
     crack_edge* e = &edges[i];
@@ -113,15 +96,12 @@ static bool has_partner(crack_edge* edges, uint32_t i, const crack_cell* cells, 
         memcpy(prev, c, sizeof prev);
         for (int k = 0; k < 27; k++) {
             int32_t q[3] = {c[0] + k % 3 - 1, c[1] + k / 3 % 3 - 1, c[2] + k / 9 - 1};
-            crack_cell probe = {cell_key(q), 0};
-            const crack_cell* hit = bsearch(&probe, cells, m, sizeof *cells, compare_cell);
-            while (hit && hit > cells && hit[-1].key == probe.key)
-                hit--;
-            for (; hit && hit < cells + m && hit->key == probe.key; hit++) {
-                if (tested[hit->edge] == i)
+            const scn_cell* hit = scn_cell_first(cells, m, q);
+            for (uint64_t key = hit ? hit->key : 0; hit && hit < cells + m && hit->key == key; hit++) {
+                if (tested[hit->item] == i)
                     continue;
-                tested[hit->edge] = i;
-                if (edges[hit->edge].tri != e->tri && alongside(e, &edges[hit->edge], max_gap))
+                tested[hit->item] = i;
+                if (edges[hit->item].tri != e->tri && alongside(e, &edges[hit->item], max_gap))
                     return true;
             }
         }
@@ -158,7 +138,7 @@ size_t scn_mark_cracks(uint8_t* crack, const uint32_t* adjacency, const uint32_t
             n++;
         }
     }
-    crack_cell* cells = malloc(sizeof(crack_cell) * (samples ? samples : 1));
+    scn_cell* cells = malloc(sizeof(scn_cell) * (samples ? samples : 1));
     if (!cells) {
         free(edges);
         return 0;
@@ -169,10 +149,10 @@ size_t scn_mark_cracks(uint8_t* crack, const uint32_t* adjacency, const uint32_t
         for (uint32_t j = 0; j < s; j++) {
             int32_t c[3];
             sample_cell(&edges[i], j, s, cell, c);
-            cells[m++] = (crack_cell){cell_key(c), i};
+            cells[m++] = (scn_cell){scn_cell_key(c), i};
         }
     }
-    qsort(cells, m, sizeof *cells, compare_cell);
+    qsort(cells, m, sizeof *cells, scn_cell_compare);
     uint32_t* tested = malloc(sizeof(uint32_t) * (n ? n : 1)); /* the last edge each was tested against */
     if (!tested) {
         free(cells);

@@ -20,6 +20,10 @@ extern "C" {
 #define SCN_EDGE_BORDER 0xFFFFFFFFu
 /* adjacency[] value for an edge shared by three or more triangles. */
 #define SCN_EDGE_NONMANIFOLD 0xFFFFFFFEu
+/* Flag on an adjacency[] value below SCN_EDGE_NONMANIFOLD: the edge is a
+ * border resting on the face whose id is in the other bits
+ * (scn_join_rest_edges). Triangle ids stay below it. */
+#define SCN_EDGE_REST 0x80000000u
 
 /* Exact welding: remap[v] = the smallest vertex id whose position is bitwise
  * equal to v's (after folding -0.0 into +0.0, so a mirrored coordinate still
@@ -60,6 +64,29 @@ void scn_build_adjacency(uint32_t* adjacency, const uint32_t* indices, size_t tr
  * the number of edges joined; 0 (nothing changed) if it cannot allocate. */
 size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                            const float* positions);
+
+/* Map-compiled levels stand walls on floor faces that run on under them,
+ * so a wall's foot is a border although nothing can be seen past it from
+ * in front of both. For each SCN_EDGE_BORDER edge E of a triangle T (corner
+ * c -> c+1, direction d) that faces F cover end to end, where each F holds E
+ * in its plane, covers a neighbourhood of E on the side d x n_F of E in that
+ * plane (n_F: F's unit normal), the F are coplanar and face one way, and T
+ * meets their plane at more than ~0.6 degrees, writes SCN_EDGE_REST | F.
+ * T and F then bound space near E as the two triangles of a consistently
+ * wound manifold edge do (a wall standing on a floor: a concave crease; a
+ * face hanging from a slab that runs on past it: a convex one), so E is a
+ * silhouette exactly when T and F do not both face the point or both face
+ * away from it; as there is no edge of F at E, such a silhouette is named
+ * from T, as a border (pvs_find_silhouettes). The argument, the tolerances
+ * (those of scn_join_tjunctions) and what it leaves alone:
+ * docs/trim-regions.md, "Silhouettes". `solid` (NULL: all) marks the
+ * triangles that may be an F: opaque and static ones, as a face with holes
+ * or one that moves does not close the crease. Run it after
+ * scn_mark_cracks, which then still sees these edges as borders; `indices`
+ * as for scn_build_adjacency, fewer than SCN_EDGE_REST triangles. Returns
+ * the number of edges joined (those before a failed allocation). */
+size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                           const float* positions, const uint8_t* solid);
 
 /* Cracks: a mesh simplified or exported per part leaves narrow gaps between
  * faces that should meet (Sponza's decimated columns: 1 cm at their

@@ -23,11 +23,14 @@ layout(local_size_x = TV_WG_SIZE) in;
 
 vec3 corner_position(uint tri, uint c) { return pvs_corner(tri, c); }
 
-bool front_facing(uint tri)
+// > 0: v* in front of the triangle's plane, < 0 behind, 0 on it or degenerate.
+float facing(uint tri)
 {
     vec3 a = corner_position(tri, 0u), b = corner_position(tri, 1u), c = corner_position(tri, 2u);
-    return dot(cross(b - a, c - a), view.apex.xyz - a) > 0.0;
+    return dot(cross(b - a, c - a), view.apex.xyz - a);
 }
+
+bool front_facing(uint tri) { return facing(tri) > 0.0; }
 
 // How far the double cone reaches in front of the plane of the triangle with
 // corners p (positive: some eye of the viewcell sees its front), in metres:
@@ -54,11 +57,11 @@ uint outcode(vec4 clip)
 }
 
 // other: the triangle across the edge, or >= TV_ADJ_CRACK (a border, crack
-// or non-manifold edge). Writes record `slot` (its region id is
+// or non-manifold edge), or a rest edge (TV_ADJ_REST), drawn as a border. Writes record `slot` (its region id is
 // pvs_order.comp's); false when the edge has no trim quad.
 bool emit_silhouette(uint slot, vec3 e0, vec3 e1, vec3 inside, uint other)
 {
-    bool has_back = other < TV_ADJ_CRACK;
+    bool has_back = other < TV_ADJ_REST;
     vec3 nb = vec3(0.0), pb = vec3(0.0);
     if (has_back) {
         pb = corner_position(other, 0u);
@@ -84,7 +87,8 @@ uint classify(uint i)
                  outcode(view.view_proj * vec4(p[2], 1.0));
     if (pvs_seethrough(tri))
         return codes == 0u ? TV_PVS_CLASS_FF : 0u;
-    bool front = front_facing(tri);
+    float side = facing(tri);
+    bool front = side > 0.0;
     uint word = 0u;
     if (codes == 0u) {
         // A single-sided back wholly behind the viewcell (short of its plane
@@ -103,7 +107,16 @@ uint classify(uint i)
         return word;
     for (uint e = 0u; e < 3u; e++) {
         uint other = adjacency[3u * tri + e];
-        bool silhouette = other >= TV_ADJ_CRACK || (front && !front_facing(other));
+        bool silhouette;
+        if (other >= TV_ADJ_CRACK) {
+            silhouette = true;
+        } else if (other >= TV_ADJ_REST) {
+            // no edge of the face rested on names it: this triangle does, both ways
+            float f = facing(other & ~TV_ADJ_REST);
+            silhouette = !((side > 0.0 && f > 0.0) || (side < 0.0 && f < 0.0));
+        } else {
+            silhouette = front && !front_facing(other);
+        }
         if (silhouette && emit_silhouette(3u * i + e, p[e], p[(e + 1u) % 3u], p[(e + 2u) % 3u], other))
             word |= TV_PVS_CLASS_EDGE(e) | (other == TV_ADJ_CRACK ? TV_PVS_CLASS_CRACK(e) : 0u);
     }

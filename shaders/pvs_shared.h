@@ -196,6 +196,10 @@
 /* Adjacency value the GPU copy gives a crack edge (P1): a border edge, like
  * SCN_EDGE_BORDER and SCN_EDGE_NONMANIFOLD above it. */
 #define TV_ADJ_CRACK 0xFFFFFFFDu
+/* Flag on an adjacency value below TV_ADJ_CRACK (SCN_EDGE_REST): a border
+ * resting on the face whose id is in the other bits; a silhouette unless
+ * the two face v* alike, and then treated as a border (P1). */
+#define TV_ADJ_REST 0x80000000u
 
 
 // Set 0 is the scene set (TV_SET_SCENE); the PVS passes bind theirs as set 1.

@@ -183,6 +183,36 @@ static void test_sliver_seen_from_behind(void)
     check_configuration(&f, "a sliver seen from behind past a slab's edge", 0.1f, FN_SIMPLE, NULL, 0, &back, 1);
 }
 
+/* A 0.2 m thick wall 5 m away standing on a floor 1.2 m below v* that runs
+ * on under it (no bottom face: the feet of its four faces are border
+ * edges). On an opaque floor the feet rest (scn_join_rest_edges): the front
+ * face's foot, where wall and floor both face v*, is no silhouette, the
+ * other three (their faces turned away) still are; on an alpha-masked floor,
+ * which may have holes, all four are. Nothing is lost either way. */
+static void test_wall_standing_on_a_floor(void)
+{
+    uint32_t silhouettes[2] = {0, 0};
+    for (int masked = 0; masked < 2; masked++) {
+        fixture f = {0};
+        uint32_t m = constructed_scene(&f);
+        uint32_t floor_material = masked ? fx_material(&f.scene, 0.5f, 0.5f, 0.5f, SCN_ALPHA_MASK, false, -1) : m;
+        const float floor[4][3] = {{-8.0f, -1.2f, -1.0f}, {8.0f, -1.2f, -1.0f}, {8.0f, -1.2f, -30.0f},
+                                   {-8.0f, -1.2f, -30.0f}}; /* faces up */
+        fx_quad(&f.scene, floor, floor_material);
+        add_standing_box(&f.scene, -4.0f, -1.2f, -5.2f, 4.0f, 1.5f, -5.0f, m);
+        uint32_t box = add_box(&f.scene, -0.5f, -1.2f, -12.0f, 0.5f, -0.2f, -11.0f, m);
+        printf("  a wall standing on a%s floor\n", masked ? "n alpha-masked" : "n opaque");
+        pvs_result r;
+        pvs_viewcell vc;
+        compute_at_origin(&f, 0.1f, &vc, &r);
+        silhouettes[masked] = r.stats.silhouettes;
+        TV_CHECK(count_in_range(&r, box, 12) == 0);
+        check_fn(&f, &r, &vc, FN_SIMPLE);
+        fixture_close(&f);
+    }
+    TV_CHECK(silhouettes[0] + 1 == silhouettes[1]);
+}
+
 /* A pillar whose front face is two quads with a 1.9 cm vertical slit
  * between them, 2.5 m away: 0.65 PVS pixels wide and placed between two
  * PVS pixel centres, so v* sees nothing through it, while eyes of the
@@ -396,6 +426,7 @@ int main(void)
     TV_TEST_RUN(test_late_face_before_terminator);
     TV_TEST_RUN(test_sliver_seen_from_behind);
     TV_TEST_RUN(test_crack_in_a_pillar);
+    TV_TEST_RUN(test_wall_standing_on_a_floor);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_box_seen_through_a_gap);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);

@@ -108,10 +108,38 @@ static void test_nonmanifold_fin(void)
     TV_CHECK(pvs_silhouettes_bound(3) == 9);
 }
 
+/* A wall triangle standing on a floor triangle that runs under it, its
+ * foot marked as resting on the floor (scn_join_rest_edges): a silhouette
+ * only where the two do not both face the point or both face away, and
+ * then named from the wall, also when the wall faces away (the floor has
+ * no edge there to name it by). */
+static void test_rest_edge(void)
+{
+    /* wall: foot (1,0,0) -> (-1,0,0), apex above, facing -z; floor: y = 0, facing +y */
+    const float pos[18] = {1, 0, 0, -1, 0, 0, 0, 1, 0, -2, 0, 2, 2, 0, 2, 0, 0, -3};
+    const uint32_t idx[6] = {0, 1, 2, 3, 4, 5};
+    uint32_t adj[6] = {SCN_EDGE_REST | 1u, SCN_EDGE_BORDER, SCN_EDGE_BORDER,
+                       SCN_EDGE_BORDER, SCN_EDGE_BORDER, SCN_EDGE_BORDER};
+    const uint32_t wall[1] = {0};
+    pvs_silhouette out[3];
+    /* in front of both; behind the wall above the floor; in front of the
+     * wall below the floor; behind both; on the floor's plane */
+    const float points[5][3] = {{0.3f, 2, -3}, {0.3f, 2, 3}, {0.3f, -2, -3}, {0.3f, -2, 3}, {0.3f, 0, -3}};
+    const bool foot[5] = {false, true, true, false, true};
+    for (int i = 0; i < 5; i++) {
+        size_t n = pvs_find_silhouettes(out, pos, idx, adj, wall, 1, points[i]);
+        TV_CHECK(n == 2u + foot[i]); /* the wall's two sides always */
+        TV_CHECK(count_edge(out, n, idx, 0, 1) == (foot[i] ? 1 : 0));
+        for (size_t k = 0; k < n; k++)
+            TV_CHECK(out[k].tri == 0);
+    }
+}
+
 int main(void)
 {
     TV_TEST_RUN(test_cube_outline);
     TV_TEST_RUN(test_open_quad_borders);
     TV_TEST_RUN(test_nonmanifold_fin);
+    TV_TEST_RUN(test_rest_edge);
     return tv_test_finish();
 }

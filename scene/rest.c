@@ -1,0 +1,347 @@
+/* rest.c - border edges that rest on another face (see scn_join_rest_edges
+ * in weld.h; the argument is in docs/trim-regions.md, "Silhouettes"). */
+#include "weld.h"
+
+#include "cell_hash.h"
+
+#include <assert.h>
+#include <cglm/cglm.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Tolerance relative to the edge length, as for T-junctions (tjunction.c):
+ * how far the edge's ends may lie off a face's plane and how far a point of
+ * the edge may stray outside the face. */
+#define REST_EPS 1e-4f
+/* The two faces must meet at an angle of at least about 0.6 degrees: flatter
+ * continuations are the T-junction pass's, and the side a face covers must
+ * be told apart from the other one. */
+#define REST_MIN_SIN 0.01f
+/* The faces that cover an edge together must be coplanar: the edge's
+ * facing test reads one of them (as tjunction.c's TJ_NORMAL_COS). */
+#define REST_NORMAL_COS 0.99999f
+/* A triangle whose box spans more grid cells than this (a sky or a huge
+ * floor) is tested against every edge instead of being put in the grid. */
+#define REST_MAX_CELLS 4096
+
+typedef struct rest_span {
+    float t0, t1;
+    uint32_t face;
+    vec3 normal;
+} rest_span;
+
+typedef struct rest_grid {
+    float cell;
+    scn_cell* cells;
+    size_t cell_count;
+    uint32_t* big; /* triangles kept out of the grid */
+    size_t big_count;
+} rest_grid;
+
+static int compare_span(const void* a, const void* b)
+{
+    float x = ((const rest_span*)a)->t0, y = ((const rest_span*)b)->t0;
+    return (x > y) - (x < y);
+}
+
+static const float* corner(const float* positions, const uint32_t* indices, uint32_t tri, uint32_t c)
+{
+    return positions + 3 * (size_t)indices[3 * (size_t)tri + c];
+}
+
+/* Unit normal; false when degenerate. */
+static bool unit_normal(const float* positions, const uint32_t* indices, uint32_t tri, vec3 n)
+{
+    vec3 a, b, c;
+    memcpy(a, corner(positions, indices, tri, 0), sizeof a);
+    memcpy(b, corner(positions, indices, tri, 1), sizeof b);
+    memcpy(c, corner(positions, indices, tri, 2), sizeof c);
+    glm_vec3_sub(b, a, b);
+    glm_vec3_sub(c, a, c);
+    glm_vec3_cross(b, c, n);
+    float len = glm_vec3_norm(n);
+    if (!(len > 0.0f))
+        return false;
+    glm_vec3_divs(n, len, n);
+    return true;
+}
+
+/* The grid cells of a triangle's box widened by `pad`; false (nothing
+ * written) when there are more than REST_MAX_CELLS. */
+static bool cell_range(const float* positions, const uint32_t* indices, uint32_t tri, float cell, float pad,
+                       int32_t lo[3], int32_t hi[3])
+{
+    size_t count = 1;
+    for (int k = 0; k < 3; k++) {
+        float mn = INFINITY, mx = -INFINITY;
+        for (uint32_t c = 0; c < 3; c++) {
+            mn = fminf(mn, corner(positions, indices, tri, c)[k]);
+            mx = fmaxf(mx, corner(positions, indices, tri, c)[k]);
+        }
+        lo[k] = (int32_t)floorf((mn - pad) / cell);
+        hi[k] = (int32_t)floorf((mx + pad) / cell);
+        count *= (size_t)(hi[k] - lo[k] + 1);
+        if (count > REST_MAX_CELLS)
+            return false;
+    }
+    return true;
+}
+
+/* Puts every face that may carry an edge (solid[] set) into the cells its
+ * box meets. The pad covers REST_EPS of the longest border edge. */
+static bool grid_build(rest_grid* g, const float* positions, const uint32_t* indices, size_t triangle_count,
+                       const uint8_t* solid, float cell, float pad)
+{
+    memset(g, 0, sizeof *g);
+    g->cell = cell;
+    size_t total = 0;
+    for (uint32_t t = 0; t < triangle_count; t++) {
+        int32_t lo[3], hi[3];
+        if (!solid || solid[t]) {
+            if (cell_range(positions, indices, t, cell, pad, lo, hi))
+                total += (size_t)(hi[0] - lo[0] + 1) * (size_t)(hi[1] - lo[1] + 1) * (size_t)(hi[2] - lo[2] + 1);
+            else
+                g->big_count++;
+        }
+    }
+    g->cells = malloc(sizeof(scn_cell) * (total ? total : 1));
+    g->big = malloc(sizeof(uint32_t) * (g->big_count ? g->big_count : 1));
+    if (!g->cells || !g->big)
+        return false;
+    g->big_count = 0;
+    for (uint32_t t = 0; t < triangle_count; t++) {
+        int32_t lo[3], hi[3], c[3];
+        if (solid && !solid[t])
+            continue;
+        if (!cell_range(positions, indices, t, cell, pad, lo, hi)) {
+            g->big[g->big_count++] = t;
+            continue;
+        }
+        for (c[0] = lo[0]; c[0] <= hi[0]; c[0]++)
+            for (c[1] = lo[1]; c[1] <= hi[1]; c[1]++)
+                for (c[2] = lo[2]; c[2] <= hi[2]; c[2]++)
+                    g->cells[g->cell_count++] = (scn_cell){scn_cell_key(c), t};
+    }
+    qsort(g->cells, g->cell_count, sizeof *g->cells, scn_cell_compare);
+    return true;
+}
+
+/* The part of edge (p0, p1) of triangle `tri` near which face f covers
+ * the side s = d x n_f (d = p1 - p0) in f's plane: the t in [0, 1] (t = 0
+ * at p0) where p0 + t d lies in f and, where it lies on an edge of f, s
+ * points into f. Writes it into span and which side of tri it is on (+1:
+ * its front, -1: its back); false when empty or when f does not qualify. */
+static bool rest_span_of(const float* positions, const uint32_t* indices, const vec4 plane_f, const vec3 n_tri,
+                         const vec3 p0, const vec3 p1, uint32_t f, rest_span* span, int* side)
+{
+    vec3 d, s;
+    float* nf = span->normal;
+    if (plane_f[3] == 0.0f)
+        return false; /* degenerate */
+    glm_vec3_copy((float*)plane_f, nf);
+    glm_vec3_sub((float*)p1, (float*)p0, d);
+    float len = glm_vec3_norm(d);
+    float eps = REST_EPS * len;
+    const float* q[3] = {corner(positions, indices, f, 0), corner(positions, indices, f, 1),
+                         corner(positions, indices, f, 2)};
+    vec3 r0, r1;
+    glm_vec3_sub((float*)p0, (float*)q[0], r0);
+    glm_vec3_sub((float*)p1, (float*)q[0], r1);
+    if (fabsf(glm_vec3_dot(nf, r0)) > eps || fabsf(glm_vec3_dot(nf, r1)) > eps)
+        return false; /* the edge is not in f's plane */
+    glm_vec3_cross(d, nf, s);
+    glm_vec3_divs(s, len, s);
+    float facing = glm_vec3_dot(s, (float*)n_tri);
+    if (fabsf(facing) < REST_MIN_SIN)
+        return false;
+    float lo = 0.0f, hi = 1.0f;
+    for (int k = 0; k < 3; k++) {
+        vec3 e, m, a, b;
+        glm_vec3_sub((float*)q[(k + 1) % 3], (float*)q[k], e);
+        glm_vec3_cross(nf, e, m); /* points into f */
+        float ml = glm_vec3_norm(m);
+        if (!(ml > 0.0f))
+            return false;
+        glm_vec3_divs(m, ml, m);
+        glm_vec3_sub((float*)p0, (float*)q[k], a);
+        glm_vec3_sub((float*)p1, (float*)q[k], b);
+        float g0 = glm_vec3_dot(m, a), g1 = glm_vec3_dot(m, b);
+        if (fabsf(g0) <= eps && fabsf(g1) <= eps) {
+            /* the edge runs along this edge of f: f must lie on side s */
+            if (glm_vec3_dot(m, s) <= 0.0f)
+                return false;
+            continue;
+        }
+        /* g(t) = g0 + t (g1 - g0) >= -eps */
+        if (g1 != g0) {
+            float tc = (-eps - g0) / (g1 - g0);
+            if (g1 > g0)
+                lo = fmaxf(lo, tc);
+            else
+                hi = fminf(hi, tc);
+        } else if (g0 < -eps) {
+            return false;
+        }
+    }
+    if (!(hi > lo))
+        return false;
+    span->t0 = lo, span->t1 = hi, span->face = f;
+    *side = facing > 0.0f ? 1 : -1;
+    return true;
+}
+
+/* The face whose plane's spans cover [0, 1] end to end (the plane of the
+ * longest span: faces of other planes are dropped), or SCN_EDGE_BORDER.
+ * Reorders the spans. */
+static uint32_t covering_face(rest_span* spans, size_t m)
+{
+    size_t ref = 0;
+    for (size_t k = 1; k < m; k++)
+        if (spans[k].t1 - spans[k].t0 > spans[ref].t1 - spans[ref].t0)
+            ref = k;
+    rest_span r = spans[ref];
+    size_t n = 0;
+    for (size_t k = 0; k < m; k++)
+        if (glm_vec3_dot(spans[k].normal, r.normal) >= REST_NORMAL_COS)
+            spans[n++] = spans[k];
+    qsort(spans, n, sizeof *spans, compare_span);
+    float reach = 0.0f;
+    for (size_t k = 0; k < n && spans[k].t0 <= reach + REST_EPS; k++)
+        reach = fmaxf(reach, spans[k].t1);
+    return reach >= 1.0f - REST_EPS ? r.face : SCN_EDGE_BORDER;
+}
+
+typedef struct rest_scratch {
+    vec4* normals;    /* per triangle: unit normal, w = 1 (all 0 when degenerate) */
+    uint32_t* tested; /* per triangle: the last edge it was tested against, +1 */
+    rest_span* spans[2]; /* the spans on the edge's front and back side */
+    size_t m[2], cap;
+} rest_scratch;
+
+static bool consider(rest_scratch* w, const float* positions, const uint32_t* indices, uint32_t tri,
+                     const vec3 n_tri, const vec3 p0, const vec3 p1, uint32_t f, uint32_t stamp)
+{
+    if (f == tri || w->tested[f] == stamp)
+        return true;
+    w->tested[f] = stamp;
+    rest_span span;
+    int side;
+    if (!rest_span_of(positions, indices, w->normals[f], n_tri, p0, p1, f, &span, &side))
+        return true;
+    int g = side > 0 ? 0 : 1;
+    if (w->m[g] == w->cap) {
+        size_t cap = 2 * w->cap;
+        for (int i = 0; i < 2; i++) {
+            rest_span* s = realloc(w->spans[i], sizeof(rest_span) * cap);
+            if (!s)
+                return false;
+            w->spans[i] = s;
+        }
+        w->cap = cap;
+    }
+    w->spans[g][w->m[g]++] = span;
+    return true;
+}
+
+/* Considers the faces in grid cell q for edge (p0, p1) of tri. */
+static bool scan_cell(rest_scratch* w, const rest_grid* g, const float* positions, const uint32_t* indices,
+                      uint32_t tri, const vec3 n_tri, const vec3 p0, const vec3 p1, const int32_t q[3],
+                      uint32_t stamp)
+{
+    const scn_cell* hit = scn_cell_first(g->cells, g->cell_count, q);
+    bool ok = true;
+    for (uint64_t key = hit ? hit->key : 0; ok && hit && hit < g->cells + g->cell_count && hit->key == key; hit++)
+        ok = consider(w, positions, indices, tri, n_tri, p0, p1, hit->item, stamp);
+    return ok;
+}
+
+size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                           const float* positions, const uint8_t* solid)
+{
+    assert(adjacency && indices && positions && triangle_count < SCN_EDGE_REST);
+    /* cell size: the mean border edge, so that an edge meets a few cells */
+    double total_len = 0.0, max_len = 0.0;
+    size_t border = 0;
+    for (size_t i = 0; i < 3 * triangle_count; i++) {
+        if (adjacency[i] != SCN_EDGE_BORDER)
+            continue;
+        size_t t = i / 3, c = i % 3;
+        double l = glm_vec3_distance((float*)corner(positions, indices, (uint32_t)t, (uint32_t)c),
+                                     (float*)corner(positions, indices, (uint32_t)t, (uint32_t)((c + 1) % 3)));
+        total_len += l, max_len = fmax(max_len, l), border++;
+    }
+    if (border == 0 || !(total_len > 0.0))
+        return 0;
+    rest_grid g;
+    rest_scratch w = {.cap = 16};
+    w.tested = calloc(triangle_count, sizeof(uint32_t));
+    w.normals = calloc(triangle_count, sizeof(vec4));
+    for (uint32_t t = 0; w.normals && t < triangle_count; t++)
+        if (unit_normal(positions, indices, t, w.normals[t]))
+            w.normals[t][3] = 1.0f;
+    for (int i = 0; i < 2; i++)
+        w.spans[i] = malloc(sizeof(rest_span) * w.cap);
+    float cell = (float)fmax(total_len / (double)border, 1e-3);
+    /* a point of an edge lies within about 1.5 REST_EPS of its length from
+     * a face that covers it: pad the faces' boxes by twice that */
+    bool ok = grid_build(&g, positions, indices, triangle_count, solid, cell, (float)(2.0 * REST_EPS * max_len)) &&
+              w.tested && w.normals && w.spans[0] && w.spans[1];
+    size_t joined = 0;
+    uint32_t stamp = 0;
+    for (uint32_t t = 0; ok && t < triangle_count; t++) {
+        if (w.normals[t][3] == 0.0f)
+            continue;
+        float* n_tri = w.normals[t];
+        for (uint32_t c = 0; ok && c < 3; c++) {
+            if (adjacency[3 * (size_t)t + c] != SCN_EDGE_BORDER)
+                continue;
+            vec3 p0, p1;
+            memcpy(p0, corner(positions, indices, t, c), sizeof p0);
+            memcpy(p1, corner(positions, indices, t, (c + 1) % 3), sizeof p1);
+            float len = glm_vec3_distance(p0, p1);
+            if (!(len > 0.0f))
+                continue;
+            stamp++;
+            w.m[0] = w.m[1] = 0;
+            for (size_t b = 0; ok && b < g.big_count; b++)
+                ok = consider(&w, positions, indices, t, n_tri, p0, p1, g.big[b], stamp);
+            /* samples half a cell apart: the stretch between two lies in
+             * the box of their cells */
+            uint32_t samples = 2u + (uint32_t)(len / (0.5f * g.cell));
+            int32_t prev[3];
+            for (uint32_t j = 0; ok && j < samples; j++) {
+                vec3 p;
+                glm_vec3_lerp(p0, p1, (float)j / (float)(samples - 1), p);
+                int32_t cur[3], lo[3], hi[3], q[3];
+                for (int k = 0; k < 3; k++) {
+                    cur[k] = (int32_t)floorf(p[k] / g.cell);
+                    lo[k] = j ? (cur[k] < prev[k] ? cur[k] : prev[k]) : cur[k];
+                    hi[k] = j ? (cur[k] > prev[k] ? cur[k] : prev[k]) : cur[k];
+                    prev[k] = cur[k];
+                }
+                for (q[0] = lo[0]; q[0] <= hi[0]; q[0]++)
+                    for (q[1] = lo[1]; q[1] <= hi[1]; q[1]++)
+                        for (q[2] = lo[2]; ok && q[2] <= hi[2]; q[2]++)
+                            ok = scan_cell(&w, &g, positions, indices, t, n_tri, p0, p1, q, stamp);
+            }
+            /* the faces of one side (facing one way) must cover the edge */
+            for (int side = 0; ok && side < 2; side++) {
+                uint32_t f = w.m[side] > 0 ? covering_face(w.spans[side], w.m[side]) : SCN_EDGE_BORDER;
+                if (f != SCN_EDGE_BORDER) {
+                    adjacency[3 * (size_t)t + c] = SCN_EDGE_REST | f;
+                    joined++;
+                    break;
+                }
+            }
+        }
+    }
+    free(g.cells);
+    free(g.big);
+    free(w.tested);
+    free(w.normals);
+    for (int i = 0; i < 2; i++)
+        free(w.spans[i]);
+    return joined; /* those joined before a failed allocation are sound */
+}

@@ -1,0 +1,179 @@
+/* Border edges resting on another face (scn_join_rest_edges): a wall on a
+ * floor, and the near misses that must stay borders. */
+#include "test.h"
+#include "weld.h"
+
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <string.h>
+
+#define MAX_TRIS 16
+
+typedef struct mesh {
+    float pos[3 * 3 * MAX_TRIS];
+    uint32_t idx[3 * MAX_TRIS], adj[3 * MAX_TRIS], remap[3 * MAX_TRIS];
+    uint8_t solid[MAX_TRIS];
+    size_t tris;
+} mesh;
+
+/* Quad c0 c1 c2 c3 (counter-clockwise seen from its front) as the two
+ * triangles (c0 c1 c2), (c0 c2 c3), unwelded: edge 0 of the first runs c0 -> c1. */
+static size_t quad(mesh* m, const float c[4][3])
+{
+    static const int corners[6] = {0, 1, 2, 0, 2, 3};
+    size_t first = m->tris;
+    for (int i = 0; i < 6; i++) {
+        size_t v = 3 * m->tris + (size_t)(i % 3);
+        memcpy(m->pos + 3 * v, c[corners[i]], sizeof(float) * 3);
+        m->idx[v] = (uint32_t)v;
+        if (i % 3 == 2) {
+            m->solid[m->tris] = 1;
+            m->tris++;
+        }
+    }
+    return first;
+}
+
+/* A 2 x 1 m wall in the plane z = 0 facing -z, from y = y0 to y0 + h (h < 0:
+ * hanging down from y0); returns the triangle whose edge 0 is its foot
+ * (y = y0) on a standing wall. */
+static size_t wall(mesh* m, float y0, float h)
+{
+    if (h > 0.0f) {
+        const float c[4][3] = {{1, y0, 0}, {-1, y0, 0}, {-1, y0 + h, 0}, {1, y0 + h, 0}};
+        return quad(m, c);
+    }
+    const float c[4][3] = {{-1, y0, 0}, {1, y0, 0}, {1, y0 + h, 0}, {-1, y0 + h, 0}};
+    return quad(m, c);
+}
+
+/* A floor in the plane y = 0 facing +y (up = false: -y) over [x0, x1] x
+ * [z0, z1]. */
+static void floor_quad(mesh* m, float x0, float x1, float z0, float z1, bool up)
+{
+    const float c[4][3] = {{x0, 0, z1}, {x1, 0, z1}, {x1, 0, z0}, {x0, 0, z0}};
+    const float r[4][3] = {{x0, 0, z0}, {x1, 0, z0}, {x1, 0, z1}, {x0, 0, z1}};
+    quad(m, up ? c : r);
+}
+
+static size_t join(mesh* m)
+{
+    scn_weld_positions(m->remap, m->pos, 3 * m->tris);
+    scn_build_adjacency(m->adj, m->idx, m->tris, m->remap);
+    return scn_join_rest_edges(m->adj, m->idx, m->tris, m->pos, m->solid);
+}
+
+/* Whether the wall's foot (edge 0 of triangle t) rests on one of the
+ * triangles from `face` on. */
+static bool rests(const mesh* m, size_t t, size_t face)
+{
+    uint32_t a = m->adj[3 * t];
+    return a != SCN_EDGE_BORDER && a != SCN_EDGE_NONMANIFOLD && (a & SCN_EDGE_REST) &&
+           (a & ~SCN_EDGE_REST) >= face;
+}
+
+static void test_wall_on_a_floor(void)
+{
+    mesh m = {0};
+    size_t foot = wall(&m, 0.0f, 1.0f);
+    floor_quad(&m, -2, 2, -2, 2, true); /* runs on under the wall */
+    TV_CHECK(join(&m) == 1);
+    TV_CHECK(rests(&m, foot, 2));
+    /* the wall's other borders stay: no face holds them */
+    TV_CHECK(m.adj[3 * foot + 1] == SCN_EDGE_BORDER); /* a side */
+    TV_CHECK(m.adj[3 * 1 + 1] == SCN_EDGE_BORDER);    /* the top */
+
+    /* a floor ending at the foot on the wall's front side is the crease itself */
+    m = (mesh){0};
+    foot = wall(&m, 0.0f, 1.0f);
+    floor_quad(&m, -2, 2, -2, 0, true);
+    TV_CHECK(join(&m) >= 1 && rests(&m, foot, 2));
+
+    /* two floor pieces meeting under the wall's middle */
+    m = (mesh){0};
+    foot = wall(&m, 0.0f, 1.0f);
+    floor_quad(&m, -2, 0, -2, 2, true);
+    floor_quad(&m, 0, 2, -2, 2, true);
+    TV_CHECK(join(&m) >= 1 && rests(&m, foot, 2));
+}
+
+/* The foot's adjacency once a standing wall (foot at height y0) is joined
+ * with a floor over [x0, x1] x [z0, z1] facing up or down (its two
+ * triangles solid or not). */
+static uint32_t foot_on(float y0, float x0, float x1, float z0, float z1, bool up, bool solid)
+{
+    mesh m = {0};
+    size_t foot = wall(&m, y0, 1.0f);
+    floor_quad(&m, x0, x1, z0, z1, up);
+    m.solid[2] = m.solid[3] = solid;
+    join(&m);
+    return m.adj[3 * foot];
+}
+
+static void test_near_misses(void)
+{
+    /* the floor only behind the wall (it ends at the foot on the wall's
+     * front side, where the viewer stands): a fin, seen past from in front */
+    TV_CHECK(foot_on(0.0f, -2, 2, 0, 2, true, true) == SCN_EDGE_BORDER);
+    /* the floor stops 1 cm short of the foot */
+    TV_CHECK(foot_on(0.0f, -2, 2, -2, -0.01f, true, true) == SCN_EDGE_BORDER);
+    /* the floor covers only part of the foot */
+    TV_CHECK(foot_on(0.0f, -2, 0.5f, -2, 2, true, true) == SCN_EDGE_BORDER);
+    /* the wall hovers 1 cm above the floor */
+    TV_CHECK(foot_on(0.01f, -2, 2, -2, 2, true, true) == SCN_EDGE_BORDER);
+    /* the floor faces down: the wall stands behind it */
+    TV_CHECK(foot_on(0.0f, -2, 2, -2, 0, false, true) == SCN_EDGE_BORDER);
+    /* an alpha-masked (or see-through) floor has holes */
+    TV_CHECK(foot_on(0.0f, -2, 2, -2, 2, true, false) == SCN_EDGE_BORDER);
+    /* the same opaque floor: the one difference */
+    TV_CHECK(foot_on(0.0f, -2, 2, -2, 2, true, true) != SCN_EDGE_BORDER);
+}
+
+/* A wall hanging below the floor plane: with the floor only on its front
+ * side the two do not close (rays from above pass the floor's edge behind
+ * the wall); with the floor running on behind it, they bound a solid
+ * (a slab's top and the face hanging from it: a convex edge). */
+static void test_wall_below_the_floor(void)
+{
+    mesh m = {0};
+    size_t top = wall(&m, 0.0f, -1.0f);
+    floor_quad(&m, -2, 2, -2, 0, true);
+    join(&m);
+    TV_CHECK(m.adj[3 * top] == SCN_EDGE_BORDER);
+
+    m = (mesh){0};
+    top = wall(&m, 0.0f, -1.0f);
+    floor_quad(&m, -2, 2, 0, 2, true);
+    TV_CHECK(join(&m) >= 1 && rests(&m, top, 2));
+}
+
+/* The floor tilted 20 degrees about the foot's line still holds the foot;
+ * tilted 1 degree about the z axis it leaves the foot's ends 1.7 cm off
+ * its plane. */
+static void test_tilted_floor(void)
+{
+    const float c = cosf(0.349f), s = sinf(0.349f);
+    mesh m = {0};
+    size_t foot = wall(&m, 0.0f, 1.0f);
+    const float about_x[4][3] = {{-2, 2 * s, 2 * c}, {2, 2 * s, 2 * c}, {2, -2 * s, -2 * c}, {-2, -2 * s, -2 * c}};
+    quad(&m, about_x);
+    TV_CHECK(join(&m) >= 1 && rests(&m, foot, 2));
+
+    const float t = tanf(0.01745f);
+    m = (mesh){0};
+    foot = wall(&m, 0.0f, 1.0f);
+    const float about_z[4][3] = {{-2, -2 * t, 2}, {2, 2 * t, 2}, {2, 2 * t, -2}, {-2, -2 * t, -2}};
+    quad(&m, about_z);
+    join(&m);
+    TV_CHECK(m.adj[3 * foot] == SCN_EDGE_BORDER);
+}
+
+int main(void)
+{
+    TV_TEST_RUN(test_wall_on_a_floor);
+    TV_TEST_RUN(test_near_misses);
+    TV_TEST_RUN(test_wall_below_the_floor);
+    TV_TEST_RUN(test_tilted_floor);
+    return tv_test_finish();
+}
