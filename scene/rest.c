@@ -216,8 +216,8 @@ static uint32_t covering_face(rest_span* spans, size_t m)
 typedef struct rest_scratch {
     vec4* normals;    /* per triangle: unit normal, w = 1 (all 0 when degenerate) */
     uint32_t* tested; /* per triangle: the last edge it was tested against, +1 */
-    rest_span* spans[2]; /* the spans on the edge's front and back side */
-    size_t m[2], cap;
+    rest_span* spans; /* the spans on the edge's front side */
+    size_t m, cap;
 } rest_scratch;
 
 static bool consider(rest_scratch* w, const float* positions, const uint32_t* indices, uint32_t tri,
@@ -228,20 +228,21 @@ static bool consider(rest_scratch* w, const float* positions, const uint32_t* in
     w->tested[f] = stamp;
     rest_span span;
     int side;
-    if (!rest_span_of(positions, indices, w->normals[f], n_tri, p0, p1, f, &span, &side))
+    /* Only a face on the edge's front side (a concave crease: a wall standing
+     * on a floor that runs on in front of it). A face behind it (a convex
+     * edge: a slab's top and the face hanging from it) would be as sound as
+     * a manifold edge, but there the pixel-centre rules lose what is seen
+     * in part of a pixel past the edge (docs/trim-regions.md, "Silhouettes"). */
+    if (!rest_span_of(positions, indices, w->normals[f], n_tri, p0, p1, f, &span, &side) || side < 0)
         return true;
-    int g = side > 0 ? 0 : 1;
-    if (w->m[g] == w->cap) {
-        size_t cap = 2 * w->cap;
-        for (int i = 0; i < 2; i++) {
-            rest_span* s = realloc(w->spans[i], sizeof(rest_span) * cap);
-            if (!s)
-                return false;
-            w->spans[i] = s;
-        }
-        w->cap = cap;
+    if (w->m == w->cap) {
+        rest_span* s = realloc(w->spans, sizeof(rest_span) * 2 * w->cap);
+        if (!s)
+            return false;
+        w->spans = s;
+        w->cap *= 2;
     }
-    w->spans[g][w->m[g]++] = span;
+    w->spans[w->m++] = span;
     return true;
 }
 
@@ -281,13 +282,12 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
     for (uint32_t t = 0; w.normals && t < triangle_count; t++)
         if (unit_normal(positions, indices, t, w.normals[t]))
             w.normals[t][3] = 1.0f;
-    for (int i = 0; i < 2; i++)
-        w.spans[i] = malloc(sizeof(rest_span) * w.cap);
+    w.spans = malloc(sizeof(rest_span) * w.cap);
     float cell = (float)fmax(total_len / (double)border, 1e-3);
     /* a point of an edge lies within about 1.5 REST_EPS of its length from
      * a face that covers it: pad the faces' boxes by twice that */
     bool ok = grid_build(&g, positions, indices, triangle_count, solid, cell, (float)(2.0 * REST_EPS * max_len)) &&
-              w.tested && w.normals && w.spans[0] && w.spans[1];
+              w.tested && w.normals && w.spans;
     size_t joined = 0;
     uint32_t stamp = 0;
     for (uint32_t t = 0; ok && t < triangle_count; t++) {
@@ -304,7 +304,7 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
             if (!(len > 0.0f))
                 continue;
             stamp++;
-            w.m[0] = w.m[1] = 0;
+            w.m = 0;
             for (size_t b = 0; ok && b < g.big_count; b++)
                 ok = consider(&w, positions, indices, t, n_tri, p0, p1, g.big[b], stamp);
             /* samples half a cell apart: the stretch between two lies in
@@ -326,14 +326,11 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
                         for (q[2] = lo[2]; ok && q[2] <= hi[2]; q[2]++)
                             ok = scan_cell(&w, &g, positions, indices, t, n_tri, p0, p1, q, stamp);
             }
-            /* the faces of one side (facing one way) must cover the edge */
-            for (int side = 0; ok && side < 2; side++) {
-                uint32_t f = w.m[side] > 0 ? covering_face(w.spans[side], w.m[side]) : SCN_EDGE_BORDER;
-                if (f != SCN_EDGE_BORDER) {
-                    adjacency[3 * (size_t)t + c] = SCN_EDGE_REST | f;
-                    joined++;
-                    break;
-                }
+            /* the faces (facing one way) must cover the edge */
+            uint32_t f = ok && w.m > 0 ? covering_face(w.spans, w.m) : SCN_EDGE_BORDER;
+            if (f != SCN_EDGE_BORDER) {
+                adjacency[3 * (size_t)t + c] = SCN_EDGE_REST | f;
+                joined++;
             }
         }
     }
@@ -341,7 +338,6 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
     free(g.big);
     free(w.tested);
     free(w.normals);
-    for (int i = 0; i < 2; i++)
-        free(w.spans[i]);
+    free(w.spans);
     return joined; /* those joined before a failed allocation are sound */
 }

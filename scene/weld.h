@@ -70,13 +70,14 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
  * in front of both. For each SCN_EDGE_BORDER edge E of a triangle T (corner
  * c -> c+1, direction d) that faces F cover end to end, where each F holds E
  * in its plane, covers a neighbourhood of E on the side d x n_F of E in that
- * plane (n_F: F's unit normal), the F are coplanar and face one way, and T
- * meets their plane at more than ~0.6 degrees, writes SCN_EDGE_REST | F.
- * T and F then bound space near E as the two triangles of a consistently
- * wound manifold edge do (a wall standing on a floor: a concave crease; a
- * face hanging from a slab that runs on past it: a convex one), so E is a
- * silhouette exactly when T and F do not both face the point or both face
- * away from it; as there is no edge of F at E, such a silhouette is named
+ * plane (n_F: F's unit normal) that lies on T's front side (n_T . (d x n_F)
+ * > 0), the F are coplanar and face one way, and T meets their plane at
+ * more than ~0.6 degrees, writes SCN_EDGE_REST | F. T and F then bound
+ * space near E as the two triangles of a consistently wound manifold edge
+ * do (a wall standing on a floor: a concave crease), so E is a silhouette
+ * exactly when T and F do not both face the point or both face away from
+ * it (a convex edge, a face hanging from a slab that runs on behind it,
+ * would be as sound but stays a border: docs/trim-regions.md); as there is no edge of F at E, such a silhouette is named
  * from T, as a border (pvs_find_silhouettes). The argument, the tolerances
  * (those of scn_join_tjunctions) and what it leaves alone:
  * docs/trim-regions.md, "Silhouettes". `solid` (NULL: all) marks the

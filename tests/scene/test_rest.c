@@ -132,8 +132,10 @@ static void test_near_misses(void)
 
 /* A wall hanging below the floor plane: with the floor only on its front
  * side the two do not close (rays from above pass the floor's edge behind
- * the wall); with the floor running on behind it, they bound a solid
- * (a slab's top and the face hanging from it: a convex edge). */
+ * the wall); with the floor running on behind it, they bound a solid (a
+ * slab's top and the face hanging from it: a convex edge), which is left a
+ * border all the same (weld.h: the pixel-centre rules lose what is seen in
+ * part of a pixel past such an edge). */
 static void test_wall_below_the_floor(void)
 {
     mesh m = {0};
@@ -145,7 +147,7 @@ static void test_wall_below_the_floor(void)
     m = (mesh){0};
     top = wall(&m, 0.0f, -1.0f);
     floor_quad(&m, -2, 2, 0, 2, true);
-    TV_CHECK(join(&m) >= 1 && rests(&m, top, 2));
+    TV_CHECK(join(&m) == 0 && m.adj[3 * top] == SCN_EDGE_BORDER);
 }
 
 /* The floor tilted 20 degrees about the foot's line still holds the foot;
