@@ -164,8 +164,9 @@ pvs_viewcell viewcell(float x, float y, float z, float delta)
 
 /* ---- builtin:unit: the wall W hides box B from (0, 1.5, 0) ---- */
 
-/* A box as six separate quads (a soup: adjacency comes from welding). */
-void soup_box(scn_scene* s, const float lo[3], const float hi[3], uint32_t m)
+/* The first `faces` faces of a box, -y last, as separate quads (a soup:
+ * adjacency comes from welding). */
+static void box_faces(scn_scene* s, const float lo[3], const float hi[3], uint32_t m, int faces)
 {
     float x0 = lo[0], y0 = lo[1], z0 = lo[2], x1 = hi[0], y1 = hi[1], z1 = hi[2];
     const float q[6][4][3] = {
@@ -176,17 +177,27 @@ void soup_box(scn_scene* s, const float lo[3], const float hi[3], uint32_t m)
         {{x0, y1, z1}, {x1, y1, z1}, {x1, y1, z0}, {x0, y1, z0}}, /* +y */
         {{x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}}, /* -y */
     };
-    for (int i = 0; i < 6; i++)
+    for (int i = 0; i < faces; i++)
         fx_quad(s, q[i], m);
 }
 
-
+void soup_box(scn_scene* s, const float lo[3], const float hi[3], uint32_t m)
+{
+    box_faces(s, lo, hi, m, 6);
+}
 
 /* A box as a soup, returning its first triangle id (12 triangles). */
 uint32_t add_box(scn_scene* s, float x0, float y0, float z0, float x1, float y1, float z1, uint32_t m)
 {
     uint32_t first = s->triangle_count;
     soup_box(s, (float[3]){x0, y0, z0}, (float[3]){x1, y1, z1}, m);
+    return first;
+}
+
+uint32_t add_standing_box(scn_scene* s, float x0, float y0, float z0, float x1, float y1, float z1, uint32_t m)
+{
+    uint32_t first = s->triangle_count;
+    box_faces(s, (float[3]){x0, y0, z0}, (float[3]){x1, y1, z1}, m, 5);
     return first;
 }
 

@@ -61,6 +61,9 @@ uint32_t fn_bound(double fraction);
 pvs_viewcell viewcell(float x, float y, float z, float delta);
 void soup_box(scn_scene* s, const float lo[3], const float hi[3], uint32_t m);
 uint32_t add_box(scn_scene* s, float x0, float y0, float z0, float x1, float y1, float z1, uint32_t m);
+/* A box without its bottom face (it stands on a floor: the feet of its
+ * sides are border edges), returning its first triangle id (10 triangles). */
+uint32_t add_standing_box(scn_scene* s, float x0, float y0, float z0, float x1, float y1, float z1, uint32_t m);
 uint32_t constructed_scene(fixture* f);
 uint32_t double_sided(fixture* f);
 
