@@ -2,8 +2,8 @@
  * configurations, each with the triangles it must hide and keep:
  * interpenetrating occluders, thin walls, umbrae inside umbrae, occluders
  * across layers, back faces past edges, culled backs, cracks, slivers,
- * openings at the view edge and through a gap, and coincident twins
- * (pvs_gpu_fixture.h). */
+ * a slot under a lifted wall, openings at the view edge and through a gap,
+ * and coincident twins (pvs_gpu_fixture.h). */
 #include "pvs_gpu_checks.h"
 #include "pvs_shared.h"
 
@@ -256,6 +256,27 @@ static void test_crack_in_a_pillar(void)
     crack_in_a_pillar(false);
 }
 
+/* A 0.2 m thick wall lifted 10 cm off a floor that ends 10 cm behind it,
+ * and a 5 cm high quad standing at the floor's far edge, seen through the
+ * slot by the eyes below v* (v0's own view included) and by no pixel centre
+ * of v*. The wall has no bottom face, so at the pixels just above its foot
+ * the ray enters its front and leaves through the open bottom: the run of
+ * the wall's front and the quad never closes, and P3 carries it with the
+ * foot's trim. Until 2026-12-02 P4 output only the run's first front (the
+ * wall) and lost the quad (154 FN pixels at v0, 104 at the worst cone
+ * sample at 30 cm); a trim carried with the run validates it. */
+static void test_quad_seen_under_a_lifted_wall(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    const float floor[4][3] = {{-8.0f, -1.2f, -1.0f}, {8.0f, -1.2f, -1.0f}, {8.0f, -1.2f, -5.3f},
+                               {-8.0f, -1.2f, -5.3f}}; /* faces up */
+    fx_quad(&f.scene, floor, m);
+    add_standing_box(&f.scene, -4.0f, -1.1f, -5.2f, 4.0f, 1.5f, -5.0f, m);
+    uint32_t quad = fx_quad_z(&f.scene, -1.0f, -1.2f, 1.0f, -1.15f, -5.3f, m); /* faces v* */
+    check_configuration(&f, "a quad seen under a lifted wall", 0.3f, FN_SIMPLE, NULL, 0, &quad, 1);
+}
+
 /* A 0.2 m square hole near the edge of the 60-degree target view (which
  * ends at x = 1.73 at this depth): the box seen through it must be kept,
  * one behind the solid part culled. The hole's 5 cm side walls are seen
@@ -427,6 +448,7 @@ int main(void)
     TV_TEST_RUN(test_sliver_seen_from_behind);
     TV_TEST_RUN(test_crack_in_a_pillar);
     TV_TEST_RUN(test_wall_standing_on_a_floor);
+    TV_TEST_RUN(test_quad_seen_under_a_lifted_wall);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_box_seen_through_a_gap);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
