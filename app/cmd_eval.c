@@ -74,6 +74,8 @@ static int make_cells(const eval_opts* o, tv_eval_cell** out, char* scene_spec, 
         if (!*out || !tv_viewcell_make(o->pos, o->dir, isnan(o->up[0]) ? NULL : o->up, o->delta, o->fov, o->fov_pvs,
                                         &(*out)->vc)) {
             tv_log(TV_LOG_ERROR, "--dir must be non-zero, --up not parallel to it and FOVs in (0, 180)");
+            free(*out);
+            *out = NULL;
             return -1;
         }
         return 1;

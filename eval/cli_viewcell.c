@@ -22,7 +22,12 @@ bool tv_viewcell_make(const float pos[3], const float dir[3], const float* up, f
         !(delta >= 0.0f))
         return false;
     memset(out, 0, sizeof *out);
-    float f[3] = {dir[0] / len, dir[1] / len, dir[2] / len};
+    /* A unit vector is taken as given, to the last bit: a replay's pvs.csv
+     * row then gives its own viewcell, and the PVS can hinge on a bit. */
+    float f[3] = {dir[0], dir[1], dir[2]};
+    if (fabsf(len - 1.0f) > 1e-6f)
+        for (int i = 0; i < 3; i++)
+            f[i] = dir[i] / len;
     float ref[3] = {0.0f, 1.0f, 0.0f};
     if (up) {
         for (int i = 0; i < 3; i++)
@@ -37,10 +42,11 @@ bool tv_viewcell_make(const float pos[3], const float dir[3], const float* up, f
     float ul = sqrtf(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     if (!(ul > 1.75e-3f * rl)) /* sin(0.1 degree): no direction to turn the frustum by */
         return false;
+    bool as_given = fabsf(d) <= 1e-6f * rl && fabsf(rl - 1.0f) <= 1e-6f; /* unit and perpendicular */
     for (int i = 0; i < 3; i++) {
         out->v0[i] = pos[i];
         out->forward[i] = f[i];
-        out->up[i] = u[i] / ul;
+        out->up[i] = as_given ? ref[i] : u[i] / ul;
     }
     finish(out, delta, fov_deg, fov_pvs_deg);
     return true;

@@ -12,9 +12,10 @@
 /* Builds the double-cone viewcell at pos looking along dir (any length > 0),
  * up = `up` made perpendicular to dir, or when up is NULL world +Y (world +Z
  * when dir is vertical), radius delta, display FOV fov_deg and PVS FOV
- * fov_pvs_deg (square frustum). The up vector turns the square PVS frustum
- * about dir, so a replay's viewcell (its pvs.csv) is reproduced only with
- * its own up. False when dir is zero, up is within 0.1 degree of parallel to
+ * fov_pvs_deg (square frustum). A unit dir, and a unit up perpendicular to
+ * it (both within 1e-6), are kept bit for bit: a replay's viewcell (its
+ * pvs.csv) is reproduced only with its own up and digits, and a facing test
+ * at an edge-on triangle can turn on the last bit. False when dir is zero, up is within 0.1 degree of parallel to
  * it, or an angle is out of (0, 180). */
 bool tv_viewcell_make(const float pos[3], const float dir[3], const float* up, float delta, float fov_deg,
                       float fov_pvs_deg, pred_viewcell* out);
