@@ -3,6 +3,7 @@
 #include "weld.h"
 
 #include "cell_hash.h"
+#include "weld_geom.h"
 
 #include <assert.h>
 #include <cglm/cglm.h>
@@ -11,17 +12,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Tolerance relative to the edge length, as for T-junctions (tjunction.c):
- * how far the edge's ends may lie off a face's plane and how far a point of
- * the edge may stray outside the face. */
-#define REST_EPS 1e-4f
-/* The two faces must meet at an angle of at least about 0.6 degrees: flatter
- * continuations are the T-junction pass's, and the side a face covers must
- * be told apart from the other one. */
+/* The two faces must meet at an angle of at least about 0.6 degrees, with
+ * the face on the edge's front side: flatter continuations are the
+ * T-junction pass's. */
 #define REST_MIN_SIN 0.01f
-/* The faces that cover an edge together must be coplanar: the edge's
- * facing test reads one of them (as tjunction.c's TJ_NORMAL_COS). */
-#define REST_NORMAL_COS 0.99999f
 /* A triangle whose box spans more grid cells than this (a sky or a huge
  * floor) is tested against every edge instead of being put in the grid. */
 #define REST_MAX_CELLS 4096
@@ -46,28 +40,6 @@ static int compare_span(const void* a, const void* b)
     return (x > y) - (x < y);
 }
 
-static const float* corner(const float* positions, const uint32_t* indices, uint32_t tri, uint32_t c)
-{
-    return positions + 3 * (size_t)indices[3 * (size_t)tri + c];
-}
-
-/* Unit normal; false when degenerate. */
-static bool unit_normal(const float* positions, const uint32_t* indices, uint32_t tri, vec3 n)
-{
-    vec3 a, b, c;
-    memcpy(a, corner(positions, indices, tri, 0), sizeof a);
-    memcpy(b, corner(positions, indices, tri, 1), sizeof b);
-    memcpy(c, corner(positions, indices, tri, 2), sizeof c);
-    glm_vec3_sub(b, a, b);
-    glm_vec3_sub(c, a, c);
-    glm_vec3_cross(b, c, n);
-    float len = glm_vec3_norm(n);
-    if (!(len > 0.0f))
-        return false;
-    glm_vec3_divs(n, len, n);
-    return true;
-}
-
 /* The grid cells of a triangle's box widened by `pad`; false (nothing
  * written) when there are more than REST_MAX_CELLS. */
 static bool cell_range(const float* positions, const uint32_t* indices, uint32_t tri, float cell, float pad,
@@ -77,8 +49,8 @@ static bool cell_range(const float* positions, const uint32_t* indices, uint32_t
     for (int k = 0; k < 3; k++) {
         float mn = INFINITY, mx = -INFINITY;
         for (uint32_t c = 0; c < 3; c++) {
-            mn = fminf(mn, corner(positions, indices, tri, c)[k]);
-            mx = fmaxf(mx, corner(positions, indices, tri, c)[k]);
+            mn = fminf(mn, scn_tri_corner(positions, indices, tri, c)[k]);
+            mx = fmaxf(mx, scn_tri_corner(positions, indices, tri, c)[k]);
         }
         lo[k] = (int32_t)floorf((mn - pad) / cell);
         hi[k] = (int32_t)floorf((mx + pad) / cell);
@@ -90,7 +62,7 @@ static bool cell_range(const float* positions, const uint32_t* indices, uint32_t
 }
 
 /* Puts every face that may carry an edge (solid[] set) into the cells its
- * box meets. The pad covers REST_EPS of the longest border edge. */
+ * box meets. The pad covers SCN_WELD_LINE_EPS of the longest border edge. */
 static bool grid_build(rest_grid* g, const float* positions, const uint32_t* indices, size_t triangle_count,
                        const uint8_t* solid, float cell, float pad)
 {
@@ -131,10 +103,10 @@ static bool grid_build(rest_grid* g, const float* positions, const uint32_t* ind
 /* The part of edge (p0, p1) of triangle `tri` near which face f covers
  * the side s = d x n_f (d = p1 - p0) in f's plane: the t in [0, 1] (t = 0
  * at p0) where p0 + t d lies in f and, where it lies on an edge of f, s
- * points into f. Writes it into span and which side of tri it is on (+1:
- * its front, -1: its back); false when empty or when f does not qualify. */
+ * points into f. Writes it into span; false when empty or when f does not
+ * qualify. */
 static bool rest_span_of(const float* positions, const uint32_t* indices, const vec4 plane_f, const vec3 n_tri,
-                         const vec3 p0, const vec3 p1, uint32_t f, rest_span* span, int* side)
+                         const vec3 p0, const vec3 p1, uint32_t f, rest_span* span)
 {
     vec3 d, s;
     float* nf = span->normal;
@@ -143,9 +115,9 @@ static bool rest_span_of(const float* positions, const uint32_t* indices, const 
     glm_vec3_copy((float*)plane_f, nf);
     glm_vec3_sub((float*)p1, (float*)p0, d);
     float len = glm_vec3_norm(d);
-    float eps = REST_EPS * len;
-    const float* q[3] = {corner(positions, indices, f, 0), corner(positions, indices, f, 1),
-                         corner(positions, indices, f, 2)};
+    float eps = SCN_WELD_LINE_EPS * len;
+    const float* q[3] = {scn_tri_corner(positions, indices, f, 0), scn_tri_corner(positions, indices, f, 1),
+                         scn_tri_corner(positions, indices, f, 2)};
     vec3 r0, r1;
     glm_vec3_sub((float*)p0, (float*)q[0], r0);
     glm_vec3_sub((float*)p1, (float*)q[0], r1);
@@ -153,8 +125,12 @@ static bool rest_span_of(const float* positions, const uint32_t* indices, const 
         return false; /* the edge is not in f's plane */
     glm_vec3_cross(d, nf, s);
     glm_vec3_divs(s, len, s);
-    float facing = glm_vec3_dot(s, (float*)n_tri);
-    if (fabsf(facing) < REST_MIN_SIN)
+    /* Only s on tri's front side (a concave crease: a wall standing on a
+     * floor that runs on in front of it). Behind it (a convex edge: a slab's
+     * top and the face hanging from it) f would be as sound as a manifold
+     * edge, but there the pixel-centre rules lose what is seen in part of a
+     * pixel past the edge (docs/trim-regions.md, "Silhouettes"). */
+    if (glm_vec3_dot(s, (float*)n_tri) < REST_MIN_SIN)
         return false;
     float lo = 0.0f, hi = 1.0f;
     for (int k = 0; k < 3; k++) {
@@ -188,7 +164,6 @@ static bool rest_span_of(const float* positions, const uint32_t* indices, const 
     if (!(hi > lo))
         return false;
     span->t0 = lo, span->t1 = hi, span->face = f;
-    *side = facing > 0.0f ? 1 : -1;
     return true;
 }
 
@@ -204,13 +179,13 @@ static uint32_t covering_face(rest_span* spans, size_t m)
     rest_span r = spans[ref];
     size_t n = 0;
     for (size_t k = 0; k < m; k++)
-        if (glm_vec3_dot(spans[k].normal, r.normal) >= REST_NORMAL_COS)
+        if (glm_vec3_dot(spans[k].normal, r.normal) >= SCN_WELD_NORMAL_COS)
             spans[n++] = spans[k];
     qsort(spans, n, sizeof *spans, compare_span);
     float reach = 0.0f;
-    for (size_t k = 0; k < n && spans[k].t0 <= reach + REST_EPS; k++)
+    for (size_t k = 0; k < n && spans[k].t0 <= reach + SCN_WELD_LINE_EPS; k++)
         reach = fmaxf(reach, spans[k].t1);
-    return reach >= 1.0f - REST_EPS ? r.face : SCN_EDGE_BORDER;
+    return reach >= 1.0f - SCN_WELD_LINE_EPS ? r.face : SCN_EDGE_BORDER;
 }
 
 typedef struct rest_scratch {
@@ -227,13 +202,7 @@ static bool consider(rest_scratch* w, const float* positions, const uint32_t* in
         return true;
     w->tested[f] = stamp;
     rest_span span;
-    int side;
-    /* Only a face on the edge's front side (a concave crease: a wall standing
-     * on a floor that runs on in front of it). A face behind it (a convex
-     * edge: a slab's top and the face hanging from it) would be as sound as
-     * a manifold edge, but there the pixel-centre rules lose what is seen
-     * in part of a pixel past the edge (docs/trim-regions.md, "Silhouettes"). */
-    if (!rest_span_of(positions, indices, w->normals[f], n_tri, p0, p1, f, &span, &side) || side < 0)
+    if (!rest_span_of(positions, indices, w->normals[f], n_tri, p0, p1, f, &span))
         return true;
     if (w->m == w->cap) {
         rest_span* s = realloc(w->spans, sizeof(rest_span) * 2 * w->cap);
@@ -269,8 +238,8 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
         if (adjacency[i] != SCN_EDGE_BORDER)
             continue;
         size_t t = i / 3, c = i % 3;
-        double l = glm_vec3_distance((float*)corner(positions, indices, (uint32_t)t, (uint32_t)c),
-                                     (float*)corner(positions, indices, (uint32_t)t, (uint32_t)((c + 1) % 3)));
+        double l = glm_vec3_distance((float*)scn_tri_corner(positions, indices, (uint32_t)t, (uint32_t)c),
+                                     (float*)scn_tri_corner(positions, indices, (uint32_t)t, (uint32_t)((c + 1) % 3)));
         total_len += l, max_len = fmax(max_len, l), border++;
     }
     if (border == 0 || !(total_len > 0.0))
@@ -280,13 +249,13 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
     w.tested = calloc(triangle_count, sizeof(uint32_t));
     w.normals = calloc(triangle_count, sizeof(vec4));
     for (uint32_t t = 0; w.normals && t < triangle_count; t++)
-        if (unit_normal(positions, indices, t, w.normals[t]))
+        if (scn_tri_unit_normal(positions, indices, t, w.normals[t]))
             w.normals[t][3] = 1.0f;
     w.spans = malloc(sizeof(rest_span) * w.cap);
     float cell = (float)fmax(total_len / (double)border, 1e-3);
-    /* a point of an edge lies within about 1.5 REST_EPS of its length from
+    /* a point of an edge lies within about 1.5 SCN_WELD_LINE_EPS of its length from
      * a face that covers it: pad the faces' boxes by twice that */
-    bool ok = grid_build(&g, positions, indices, triangle_count, solid, cell, (float)(2.0 * REST_EPS * max_len)) &&
+    bool ok = grid_build(&g, positions, indices, triangle_count, solid, cell, (float)(2.0 * SCN_WELD_LINE_EPS * max_len)) &&
               w.tested && w.normals && w.spans;
     size_t joined = 0;
     uint32_t stamp = 0;
@@ -298,8 +267,8 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
             if (adjacency[3 * (size_t)t + c] != SCN_EDGE_BORDER)
                 continue;
             vec3 p0, p1;
-            memcpy(p0, corner(positions, indices, t, c), sizeof p0);
-            memcpy(p1, corner(positions, indices, t, (c + 1) % 3), sizeof p1);
+            memcpy(p0, scn_tri_corner(positions, indices, t, c), sizeof p0);
+            memcpy(p1, scn_tri_corner(positions, indices, t, (c + 1) % 3), sizeof p1);
             float len = glm_vec3_distance(p0, p1);
             if (!(len > 0.0f))
                 continue;

@@ -2,43 +2,19 @@
  * (see scn_join_tjunctions in weld.h). */
 #include "weld.h"
 
+#include "weld_geom.h"
+
 #include <cglm/cglm.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* Tolerances, relative to the edge length: a T-junction vertex computed by
- * a map compiler lies on the long edge up to rounding. */
-#define TJ_LINE_EPS 1e-4f
-#define TJ_NORMAL_COS 0.99999f
-
 typedef struct tj_edge {
     uint32_t tri, corner;
     vec3 p0, p1;
     uint64_t key; /* quantised line: direction and closest point to the origin */
 } tj_edge;
-
-static void corner_pos(const float* positions, const uint32_t* indices, uint32_t tri, uint32_t c, vec3 out)
-{
-    memcpy(out, positions + 3 * (size_t)indices[3 * tri + c], sizeof(vec3));
-}
-
-/* Unit normal of a triangle; false when degenerate. */
-static bool tri_normal(const float* positions, const uint32_t* indices, uint32_t tri, vec3 n)
-{
-    vec3 p[3];
-    for (uint32_t c = 0; c < 3; c++)
-        corner_pos(positions, indices, tri, c, p[c]);
-    glm_vec3_sub(p[1], p[0], p[1]);
-    glm_vec3_sub(p[2], p[0], p[2]);
-    glm_vec3_cross(p[1], p[2], n);
-    float len = glm_vec3_norm(n);
-    if (!(len > 0.0f))
-        return false;
-    glm_vec3_divs(n, len, n);
-    return true;
-}
 
 /* Lines are bucketed by direction (sign-canonical, 1/64 steps) and by the
  * point nearest the origin (5 cm steps). Two collinear edges whose keys fall
@@ -87,7 +63,7 @@ static bool continues(const float* positions, const uint32_t* indices, tj_edge* 
     vec3 d;
     glm_vec3_sub(a->p1, a->p0, d);
     float len = glm_vec3_norm(d);
-    float eps = TJ_LINE_EPS * len;
+    float eps = SCN_WELD_LINE_EPS * len;
     float* bp[2] = {b->p0, b->p1};
     float t[2];
     for (int i = 0; i < 2; i++) {
@@ -99,13 +75,13 @@ static bool continues(const float* positions, const uint32_t* indices, tj_edge* 
         t[i] = glm_vec3_dot(r, d) / (len * len);
     }
     vec3 nb;
-    if (!tri_normal(positions, indices, b->tri, nb) || glm_vec3_dot(na, nb) < TJ_NORMAL_COS)
+    if (!scn_tri_unit_normal(positions, indices, b->tri, nb) || glm_vec3_dot(na, nb) < SCN_WELD_NORMAL_COS)
         return false;
     /* the third corners lie on opposite sides of the line, within the plane */
     vec3 side, ra, rb;
     glm_vec3_cross(na, d, side);
-    corner_pos(positions, indices, a->tri, (a->corner + 2) % 3, ra);
-    corner_pos(positions, indices, b->tri, (b->corner + 2) % 3, rb);
+    glm_vec3_copy((float*)scn_tri_corner(positions, indices, a->tri, (a->corner + 2) % 3), ra);
+    glm_vec3_copy((float*)scn_tri_corner(positions, indices, b->tri, (b->corner + 2) % 3), rb);
     glm_vec3_sub(ra, a->p0, ra);
     glm_vec3_sub(rb, a->p0, rb);
     if (fabsf(glm_vec3_dot(na, rb)) > eps || glm_vec3_dot(side, ra) * glm_vec3_dot(side, rb) >= 0.0f)
@@ -134,8 +110,8 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
             if (adjacency[3 * t + c] != SCN_EDGE_BORDER)
                 continue;
             tj_edge* e = &edges[n];
-            corner_pos(positions, indices, t, c, e->p0);
-            corner_pos(positions, indices, t, (c + 1) % 3, e->p1);
+            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, c), e->p0);
+            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, (c + 1) % 3), e->p1);
             if (!(glm_vec3_distance2(e->p0, e->p1) > 0.0f))
                 continue;
             e->tri = t, e->corner = c, e->key = line_key(e->p0, e->p1);
@@ -149,7 +125,7 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
             ;
         for (size_t i = lo; i < hi; i++) {
             vec3 na;
-            if (!tri_normal(positions, indices, edges[i].tri, na))
+            if (!scn_tri_unit_normal(positions, indices, edges[i].tri, na))
                 continue;
             size_t m = 0;
             uint32_t partner = SCN_EDGE_BORDER;
@@ -165,7 +141,7 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
             /* covered from t = 0 to 1 by the union of the spans */
             qsort(spans, m, sizeof *spans, compare_span);
             float reach = 0.0f;
-            const float eps = TJ_LINE_EPS;
+            const float eps = SCN_WELD_LINE_EPS;
             for (size_t k = 0; k < m && spans[k].t0 <= reach + eps; k++)
                 reach = fmaxf(reach, spans[k].t1);
             if (reach >= 1.0f - eps) {
