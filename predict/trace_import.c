@@ -168,8 +168,18 @@ static bool _row(import_state* st, char* line, size_t line_no, pred_path* out, p
         st->t0_whole = whole;
         st->t0_frac = frac;
     }
+    /* Times are kept relative to the first sample's, in whole units and a
+     * fraction, so that nanosecond stamps keep their precision; a stamp too
+     * far from the first one for that (or for a finite double) is an error,
+     * not a wrapped or infinite time. */
     double scale = k_formats[st->format].seconds_per_unit;
-    pred_pose pose = {.t = (double)(whole - st->t0_whole) * scale + (frac - st->t0_frac) * scale,
+    long long dwhole;
+    double t = 0.0;
+    if (__builtin_sub_overflow(whole, st->t0_whole, &dwhole) ||
+        !isfinite(t = (double)dwhole * scale + (frac - st->t0_frac) * scale))
+        return pred_text_fail(err, err_size, st->file, line_no, "time '%s' in column %s is too far from the first row's",
+                              fields[st->field_of[COL_T]], names[COL_T]);
+    pred_pose pose = {.t = t,
                       .p = {v[COL_PX], v[COL_PY], v[COL_PZ]},
                       .q = {v[COL_QX], v[COL_QY], v[COL_QZ], v[COL_QW]}};
     double norm = pred_quat_normalize(pose.q);

@@ -148,6 +148,12 @@ static void test_malformed(void)
     /* an explicit format that the header does not match */
     expect_error("optitrack-short.csv", PRED_TRACE_QUEST, "optitrack-short.csv:1: header lacks column 'time' of the quest format");
     expect_error("no-such-trace.csv", PRED_TRACE_AUTO, "no-such-trace.csv: cannot open");
+    /* stamps whose difference from the first row's overflows a long long or a
+     * double (fuzz findings: a wrapped time, an infinite one) */
+    expect_error("optitrack-time-overflow.csv", PRED_TRACE_AUTO,
+                 "optitrack-time-overflow.csv:3: time '9000000000000000000' in column t_header_s is too far from the first row's");
+    expect_error("optitrack-time-infinite.csv", PRED_TRACE_AUTO,
+                 "optitrack-time-infinite.csv:3: time '1e308' in column t_header_s is too far from the first row's");
     pred_trace_format f;
     TV_CHECK(pred_trace_format_from_name("optitrack", &f) && f == PRED_TRACE_OPTITRACK);
     TV_CHECK(!pred_trace_format_from_name("vive", &f));
