@@ -72,7 +72,7 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth
         /* Candidate backs fill at most half the list: a real back they
          * pushed out would merge two intervals (more output). They are
          * dropped without a count, so the list does not read as overflowed. */
-        if ((id & TV_ID_CANDIDATE) != 0 && kbuf->back_count >= TV_K_BACK / 2)
+        if ((id & TV_ID_CANDIDATE) != 0 && kbuf->back_count >= (kbuf->k_exact ? kbuf->k_exact : TV_K_BACK) / 2)
             return false;
         return claim(&kbuf->back_count, TV_K_BACK, &s) && store(kbuf, pages, 1, &kbuf->back_count, s, depth, id);
     case TV_ENTRY_TRIM:

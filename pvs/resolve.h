@@ -52,6 +52,8 @@ typedef struct pvs_kpages {
  * (what pvs_resolve_pixel reads). */
 typedef struct pvs_kbuf {
     uint32_t front_count, back_count, trim_count, umbra_count; /* may exceed K; TV_PVS_COUNT_LOST: pages ran out */
+    /* pvs_desc.k (0: TV_K_*): a pixel with a longer list is deep, its umbrae count for nothing. */
+    uint32_t k_exact;
     uint32_t head[TV_PVS_LISTS]; /* first page + 1 of each list in the pool (0: empty) */
     /* Entries in the arrays below: min(count, K), fewer when the pool lost some. */
     uint32_t front_held, back_held, trim_held, umbra_held;
