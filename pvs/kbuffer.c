@@ -117,6 +117,15 @@ void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages)
         read_list(pages, kbuf->head[3], kbuf->umbra_count, TV_K_UMBRA, kbuf->umbra_depth, kbuf->umbra_region);
 }
 
+bool pvs_kbuf_deep(const pvs_kbuf* k)
+{
+    uint32_t e = k->k_exact;
+    bool longer = k->front_count > e || k->back_count > e || k->trim_count > e || k->umbra_count > e;
+    bool fit = k->front_count <= TV_K_FRONT && k->back_count <= TV_K_BACK && k->trim_count <= TV_K_TRIM &&
+               k->umbra_count <= TV_K_UMBRA;
+    return e && longer && fit;
+}
+
 bool pvs_sealed_output(const pvs_pixel_state* state, float depth)
 {
     assert(state && state->stencil == TV_STENCIL_SEALED);

@@ -117,8 +117,7 @@ static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t
  * faces lie behind an occluder, some are seen nearer its edge (trim-regions.md). */
 static bool umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth)
 {
-    if (k->k_exact && (k->front_count > k->k_exact || k->back_count > k->k_exact || k->trim_count > k->k_exact ||
-                       k->umbra_count > k->k_exact))
+    if (pvs_kbuf_deep(k))
         return false;
     float nearest = INFINITY;
     for (uint32_t i = 0; i < k->umbra_held; i++) {

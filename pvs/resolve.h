@@ -109,6 +109,10 @@ typedef struct pvs_pixel_state {
  * the resolve. Asserts a valid kind. */
 bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth, uint32_t id);
 
+/* A deep pixel: k_exact set, a list longer than it, none past its capacity
+ * (docs/trim-regions.md, "Overflow policy"). */
+bool pvs_kbuf_deep(const pvs_kbuf* kbuf);
+
 /* Gathers the pixel's entries from the pages into kbuf's arrays, as P3 reads
  * them: the first min(count, K) slots of each list, skipping holes. */
 void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages);

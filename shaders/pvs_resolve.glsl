@@ -162,8 +162,8 @@ void resolve_overflow()
 
 bool umbra_depth(uint region, inout float depth)
 {
-    if (any(greaterThan(cnt, uvec4(view.k_exact))))
-        return false; // a deep pixel: umbrae count for nothing (resolve.c says why)
+    if (any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))))
+        return false; // a deep pixel (pvs_kbuf_deep): umbrae count for nothing (resolve.c says why)
     const float inf = uintBitsToFloat(0x7F800000u);
     float nearest = inf;
     uvec2 u;
