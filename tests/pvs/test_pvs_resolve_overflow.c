@@ -103,7 +103,8 @@ static void test_overflow_umbra_list(void)
 /* A deep pixel (a list longer than k_exact, none past its capacity) resolves
  * without umbrae: [2, 2.5], validated, lies inside region 1's umbra and is
  * hidden at a shallow pixel; at a deep one only [1, 1.5] itself is hidden,
- * and 2 is output. F 5 terminates both. */
+ * and 2 is output. F 5 terminates both. A pixel whose front list overflows
+ * behind that terminator is not deep: 2 stays hidden. */
 static void test_deep_pixel_without_umbrae(void)
 {
     for (uint32_t k_exact = 3; k_exact >= 2; k_exact--) {
@@ -117,6 +118,14 @@ static void test_deep_pixel_without_umbrae(void)
         else
             CHECK_OUT(r, 1, 2, 3);
     }
+    item items[TV_K_FRONT + 10] = {F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
+                                   U(4.0f, 2), F(5.0f, 3), B(6.0f)};
+    for (uint32_t i = 10; i < TV_K_FRONT + 10; i++)
+        items[i] = (item)F(7.0f + (float)i, 100 + i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, TV_K_FRONT + 10);
+    TV_CHECK(r.overflowed && s.stencil == TV_STENCIL_SEALED);
+    CHECK_OUT(r, 1, 3);
     harness_k_exact = 0;
 }
 
