@@ -14,10 +14,10 @@
 /* Trim-region PVS, per-pixel k-buffers of P2 and the trim-sequence resolve of
  * P3 (pvs/resolve.h is the C reference the shaders mirror). Capacity per
  * pixel and kind; a counter above its K marks the pixel overflowed. */
-#define TV_K_FRONT 64
-#define TV_K_BACK  64
-#define TV_K_TRIM  64
-#define TV_K_UMBRA 64
+#define TV_K_FRONT 32
+#define TV_K_BACK  32
+#define TV_K_TRIM  32
+#define TV_K_UMBRA 32
 #define TV_K_CARRY 16 /* entries one pixel carries from a layer to the next */
 /* The four lists of every pixel live in one pool of pages per tile, taken as
  * P2 fills them (docs/trim-regions.md, "k-buffer layout"): a list is a chain
