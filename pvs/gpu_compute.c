@@ -95,10 +95,11 @@ static void write_view(pvs_context* ctx, const pvs_viewcell* vc, const rnd_camer
                       .max_width = 4.0f * (fr.tan_half_x + fr.tan_half_y),
                       .width = ctx->width,
                       .height = ctx->height,
-                      .k = ctx->k,
+                      .k = ctx->k_store,
                       .triangle_count = ctx->triangle_count,
                       .explain = ctx->explain,
-                      .list_capacity = ctx->list_capacity};
+                      .list_capacity = ctx->list_capacity,
+                      .k_exact = ctx->k};
     rnd_camera_view_proj(cam, v->aspect, g.view_proj);
     for (int i = 0; i < 3; i++) {
         g.apex[i] = v->apex[i];

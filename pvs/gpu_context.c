@@ -388,11 +388,11 @@ static uint32_t coop_width(const rnd_context* rnd)
     return sub.subgroupSize < 4 ? 4 : sub.subgroupSize > 128 ? 128 : sub.subgroupSize;
 }
 
-/* The flat layout's pages per pixel: every list holds k slots, as the layout
+/* The flat layout's pages per pixel: every list holds k_store slots, as the layout
  * before the pool had it. */
 static uint32_t flat_pages_per_pixel(const pvs_context* ctx)
 {
-    return TV_PVS_LISTS * ((ctx->k + TV_PVS_PAGE - 1) / TV_PVS_PAGE);
+    return TV_PVS_LISTS * ((ctx->k_store + TV_PVS_PAGE - 1) / TV_PVS_PAGE);
 }
 
 /* The paged pool's first and largest size (its slots fit one storage
@@ -427,8 +427,9 @@ static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
 
 static bool check_desc(const pvs_desc* d, char* err, size_t err_size)
 {
-    if (d->k > TV_K_FRONT || d->k > TV_K_BACK || d->k > TV_K_TRIM || d->k > TV_K_UMBRA) {
-        snprintf(err, err_size, "pvs: k = %u exceeds the shader capacity TV_K_* = %u", d->k, TV_K_FRONT);
+    uint32_t k_max = d->k > d->k_deep ? d->k : d->k_deep;
+    if (k_max > TV_K_FRONT || k_max > TV_K_BACK || k_max > TV_K_TRIM || k_max > TV_K_UMBRA) {
+        snprintf(err, err_size, "pvs: k = %u exceeds the shader capacity TV_K_* = %u", k_max, TV_K_FRONT);
         return false;
     }
     if (!(d->near_m >= 0.0f)) {
@@ -493,6 +494,7 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     pvs_kbuffer_layout layout = d.kbuffer_layout ? d.kbuffer_layout : cpu ? PVS_KBUFFER_FLAT : PVS_KBUFFER_PAGED;
     assert(layout == PVS_KBUFFER_FLAT || layout == PVS_KBUFFER_PAGED);
     ctx->kb_paged = layout == PVS_KBUFFER_PAGED;
+    ctx->k_store = d.k_deep > ctx->k ? d.k_deep : ctx->k;
     ctx->grid = tile_grid(ctx, d.max_tile_pixels);
     size_pool(ctx, &d);
     ctx->explain = d.explain;
@@ -522,9 +524,9 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
         pvs_destroy(ctx);
         return NULL;
     }
-    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u, %s k-buffers of %u pages (%.1f MiB)",
+    tv_log(TV_LOG_INFO, "pvs: %s: %u octree leaves, %ux%u in %u tiles of %ux%u, k = %u (lists store %u), %s k-buffers of %u pages (%.1f MiB)",
            scene->name, ctx->octree.leaf_count, ctx->width, ctx->height, pvs_tile_count(&ctx->grid),
-           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k, ctx->kb_paged ? "paged" : "flat", ctx->pool_pages,
+           ctx->grid.tile_width, ctx->grid.tile_height, ctx->k, ctx->k_store, ctx->kb_paged ? "paged" : "flat", ctx->pool_pages,
            (double)kbuffer_bytes(ctx) / (1024.0 * 1024.0));
     return ctx;
 }

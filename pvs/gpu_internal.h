@@ -23,10 +23,10 @@ typedef struct pvs_view_gpu {
     float apex[4], forward[4], right[4], up[4];
     float tan_half_x, tan_half_y, tan_alpha, far_dist; /* far_dist: PVS far plane from v* */
     float near_dist, delta, focal_px, max_width;      /* max_width: clamp of infinite trim widths */
-    uint32_t width, height, k, triangle_count;
+    uint32_t width, height, k, triangle_count; /* k: pvs_context.k_store */
     uint32_t tile_x, tile_y, tile_w, tile_h; /* rewritten per tile by the command buffer */
     uint32_t explain, kb_holes;             /* pvs_desc.explain; kb_holes: pvs_pool_regrow */
-    uint32_t list_capacity, pad;            /* TV_PVS_BIND_ORDER's cap: pvs_context.list_capacity */
+    uint32_t list_capacity, k_exact;        /* TV_PVS_BIND_ORDER's cap: pvs_context.list_capacity; k_exact: pvs_context.k */
 } pvs_view_gpu;
 _Static_assert(offsetof(pvs_view_gpu, apex) == 64 && offsetof(pvs_view_gpu, up) == 112 &&
                    offsetof(pvs_view_gpu, tan_half_x) == 128 && offsetof(pvs_view_gpu, near_dist) == 144 &&
@@ -54,6 +54,7 @@ struct pvs_context {
     rnd_context* rnd;
     const rnd_gpu_scene* gpu;
     uint32_t width, height, k;
+    uint32_t k_store;        /* slots each list stores: pvs_desc.k_deep, at least k */
     pvs_tile_grid grid;     /* the per-pixel buffers hold one tile */
     uint32_t kb_paged;       /* pvs_desc.kbuffer_layout is PVS_KBUFFER_PAGED (a specialisation constant) */
     uint32_t pool_pages;     /* k-buffer pages the pool holds (pvs_reserve_pool) ... */

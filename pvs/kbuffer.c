@@ -72,7 +72,7 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth
         /* Candidate backs fill at most half the list: a real back they
          * pushed out would merge two intervals (more output). They are
          * dropped without a count, so the list does not read as overflowed. */
-        if ((id & TV_ID_CANDIDATE) != 0 && kbuf->back_count >= TV_K_BACK / 2)
+        if ((id & TV_ID_CANDIDATE) != 0 && kbuf->back_count >= (kbuf->k_exact ? kbuf->k_exact : TV_K_BACK) / 2)
             return false;
         return claim(&kbuf->back_count, TV_K_BACK, &s) && store(kbuf, pages, 1, &kbuf->back_count, s, depth, id);
     case TV_ENTRY_TRIM:
@@ -115,6 +115,15 @@ void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages)
     kbuf->trim_held = read_list(pages, kbuf->head[2], kbuf->trim_count, TV_K_TRIM, kbuf->trim_depth, kbuf->trim_region);
     kbuf->umbra_held =
         read_list(pages, kbuf->head[3], kbuf->umbra_count, TV_K_UMBRA, kbuf->umbra_depth, kbuf->umbra_region);
+}
+
+bool pvs_kbuf_deep(const pvs_kbuf* k)
+{
+    uint32_t e = k->k_exact;
+    bool longer = k->front_count > e || k->back_count > e || k->trim_count > e || k->umbra_count > e;
+    bool fit = k->front_count <= TV_K_FRONT && k->back_count <= TV_K_BACK && k->trim_count <= TV_K_TRIM &&
+               k->umbra_count <= TV_K_UMBRA;
+    return e && longer && fit;
 }
 
 bool pvs_sealed_output(const pvs_pixel_state* state, float depth)

@@ -112,9 +112,13 @@ static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t
 }
 
 /* Depth of the umbra of trim region `region` at this pixel (nearest if it
- * was rasterised more than once), from this layer or carried. */
+ * was rasterised more than once), from this layer or carried. None at a deep
+ * pixel: an umbra ends where the pixel's centre ray leaves it, and where many
+ * faces lie behind an occluder, some are seen nearer its edge (trim-regions.md). */
 static bool umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth)
 {
+    if (pvs_kbuf_deep(k))
+        return false;
     float nearest = INFINITY;
     for (uint32_t i = 0; i < k->umbra_held; i++) {
         if (k->umbra_region[i] == region)

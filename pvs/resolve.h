@@ -52,6 +52,8 @@ typedef struct pvs_kpages {
  * (what pvs_resolve_pixel reads). */
 typedef struct pvs_kbuf {
     uint32_t front_count, back_count, trim_count, umbra_count; /* may exceed K; TV_PVS_COUNT_LOST: pages ran out */
+    /* pvs_desc.k (0: TV_K_*): a pixel with a longer list is deep, its umbrae count for nothing. */
+    uint32_t k_exact;
     uint32_t head[TV_PVS_LISTS]; /* first page + 1 of each list in the pool (0: empty) */
     /* Entries in the arrays below: min(count, K), fewer when the pool lost some. */
     uint32_t front_held, back_held, trim_held, umbra_held;
@@ -106,6 +108,10 @@ typedef struct pvs_pixel_state {
  * for a front the caller must then keep `id` and ask pvs_spill_output after
  * the resolve. Asserts a valid kind. */
 bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth, uint32_t id);
+
+/* A deep pixel: k_exact set, a list longer than it, none past its capacity
+ * (docs/trim-regions.md, "Overflow policy"). */
+bool pvs_kbuf_deep(const pvs_kbuf* kbuf);
 
 /* Gathers the pixel's entries from the pages into kbuf's arrays, as P3 reads
  * them: the first min(count, K) slots of each list, skipping holes. */

@@ -20,7 +20,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
     float near_dist, delta, focal_px, max_width;
     uint width, height, k, triangle_count; // width, height: the whole image
     uint tile_x, tile_y, tile_w, tile_h;    // the tile being computed (pvs/tiles.h): per-pixel buffers index it
-    uint explain, kb_holes, list_capacity, pad2; // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain); kb_holes: pvs_kbuffer.glsl; list_capacity: TV_PVS_BIND_ORDER's cap
+    uint explain, kb_holes, list_capacity, k_exact; // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain); kb_holes: pvs_kbuffer.glsl; list_capacity: TV_PVS_BIND_ORDER's cap; k: slots stored per list, k_exact: pvs_desc.k (a longer list: a deep pixel)
     float depth_bound[];                    // pvs/depth_bound.h's cells, all levels (pvs_trim.glsl)
 } view;
 

@@ -109,7 +109,7 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
             return false;
         }
     } else if (kind == TV_PVS_KIND_BACK) {
-        if ((id & TV_ID_CANDIDATE) != 0u && pixcount[p].y >= view.k / 2u)
+        if ((id & TV_ID_CANDIDATE) != 0u && pixcount[p].y >= view.k_exact / 2u)
             return false; // pvs_kbuf_push: half the list stays for real backs
         uint slot = atomicAdd(pixcount[p].y, 1u);
         return slot < view.k && pvs_store(p, 1u, slot, e);

@@ -3,7 +3,7 @@
 // sort) and pvs_resolve_group.comp (one workgroup per pixel whose sequence
 // is long, bitonic sort). It mirrors pvs_resolve_pixel in pvs/resolve.c
 // function by function (same names, same order, same tie-breaks); the only
-// difference is the runtime capacity view.k in place of the TV_K_* bounds,
+// difference is the runtime capacities view.k, k_exact in place of the TV_K_* bounds, kbuf.k_exact,
 // and that the k-buffers are read through their pages (kb_next) where the C
 // reference has arrays (pvs_kbuf_read).
 // Output ids set their flag in tri_flags.
@@ -162,6 +162,8 @@ void resolve_overflow()
 
 bool umbra_depth(uint region, inout float depth)
 {
+    if (any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))))
+        return false; // a deep pixel (pvs_kbuf_deep): umbrae count for nothing (resolve.c says why)
     const float inf = uintBitsToFloat(0x7F800000u);
     float nearest = inf;
     uvec2 u;

@@ -15,7 +15,7 @@ void fixture_open(fixture* f, uint32_t k)
     f->target = f->gpu ? rnd_target_create(g_rnd, W, H, err, sizeof err) : NULL;
     f->apex_target = f->target ? rnd_target_create(g_rnd, PW, PH, err, sizeof err) : NULL;
     f->pvs = f->apex_target ? pvs_create(g_rnd, &f->scene, f->gpu, &(pvs_desc){.width = PW, .height = PH, .k = k, .octree_cap = f->octree_cap,
-                                                              .max_layers = f->max_layers,
+                                                              .max_layers = f->max_layers, .k_deep = f->k_deep,
                                                               .coop_sort_min = f->coop_sort_min, .explain = f->explain},
                                          err, sizeof err)
                             : NULL;

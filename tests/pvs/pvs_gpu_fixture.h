@@ -44,6 +44,7 @@ typedef struct fixture {
     uint32_t max_layers;    /* 0: the default */
     uint32_t coop_sort_min; /* 0: the default */
     bool explain;           /* pvs_desc.explain */
+    uint32_t k_deep;        /* pvs_desc.k_deep */
 } fixture;
 
 void fixture_open(fixture* f, uint32_t k);

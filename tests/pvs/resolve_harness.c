@@ -4,6 +4,7 @@
 #include <string.h>
 
 uint32_t harness_pages = HARNESS_MAX_PAGES;
+uint32_t harness_k_exact;
 
 /* prior_front / prior_back: P2's nearest front / back depth at the pixel
  * centre over this and the earlier layers (0: none). */
@@ -15,6 +16,7 @@ layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_
     pvs_kpages pages = {slots, links, harness_pages, 0};
     pvs_kbuf k;
     memset(&k, 0, sizeof k);
+    k.k_exact = harness_k_exact;
     k.nearest_front = prior_front;
     k.nearest_back = prior_back;
     layer_result r = {0};

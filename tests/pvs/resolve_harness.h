@@ -39,6 +39,8 @@ typedef struct layer_result {
  * HARNESS_MAX_PAGES, which holds every list of one pixel at K). */
 #define HARNESS_MAX_PAGES (TV_PVS_LISTS * TV_K_FRONT / TV_PVS_PAGE)
 extern uint32_t harness_pages;
+/* pvs_kbuf.k_exact of each run_layer* (0: none, no pixel is deep). */
+extern uint32_t harness_k_exact;
 
 
 /* One layer: pushes `items` into a k-buffer as P2 would (prior_front /

@@ -336,6 +336,42 @@ static void test_trims_lost_behind_a_wall(void)
     fixture_close(&f);
 }
 
+/* Eight boxes whose silhouettes coincide in the image, in front of a wall,
+ * and a ninth box behind the wall: the pixels along the silhouettes get more
+ * fronts and trims than k = 4. Lists of k entries leave those pixels to the
+ * overflow policy, which outputs every front there, the hidden box's too;
+ * lists of k_deep = 32 resolve them as deep pixels, without umbrae
+ * (docs/trim-regions.md, "Overflow policy"): the wall seals them and the
+ * hidden box is culled. */
+static void test_deep_pixels_resolve(void)
+{
+    uint32_t hidden[2], overflow[2];
+    for (int deep = 0; deep < 2; deep++) {
+        fixture f = {.k_deep = deep ? 32 : 0};
+        uint32_t m = constructed_scene(&f);
+        for (int i = 0; i < 8; i++) {
+            float z = 6.0f + (float)i, h = 0.05f * z;
+            add_box(&f.scene, -h, -h, -z - 0.1f, h, h, -z, m);
+        }
+        add_box(&f.scene, -3.0f, -2.0f, -16.2f, 3.0f, 2.0f, -16.0f, m);
+        uint32_t first = f.scene.triangle_count;
+        add_box(&f.scene, -0.9f, -0.9f, -18.1f, 0.9f, 0.9f, -18.0f, m);
+        scn_scene_update_bounds(&f.scene);
+        fixture_open(&f, 4);
+        pvs_result r;
+        pvs_viewcell vc = viewcell(0.0f, 0.0f, 0.0f, 0.1f);
+        TV_CHECK(compute(&f, &vc, &r));
+        hidden[deep] = count_in_range(&r, first, 12);
+        overflow[deep] = r.stats.overflow_pixels;
+        TV_CHECK(apex_fn(&f, &r, &vc) == 0);
+        fixture_close(&f);
+    }
+    printf("  hidden box triangles in the PVS: %u at k_deep 0, %u at 32; overflowing pixels %u, %u\n", hidden[0], hidden[1],
+           overflow[0], overflow[1]);
+    TV_CHECK(overflow[0] > 0 && hidden[0] > 0); /* the case overflows at k = 4 */
+    TV_CHECK(overflow[1] < overflow[0] && hidden[1] == 0);
+}
+
 /* ---- hybrid sort: per thread or per workgroup, the same PVS ---- */
 
 /* The PVS of the interior's room with every sequence sorted per thread, those
@@ -443,6 +479,7 @@ int main(void)
     TV_TEST_RUN(test_needles);
     TV_TEST_RUN(test_tiny_k_overflow);
     TV_TEST_RUN(test_trims_lost_behind_a_wall);
+    TV_TEST_RUN(test_deep_pixels_resolve);
     TV_TEST_RUN(test_hybrid_sort);
     TV_TEST_RUN(test_city_no_false_negatives);
     TV_TEST_RUN(test_worker_thread);

@@ -31,6 +31,7 @@
 #define PIXELS (SIDE * SIDE)
 #define IDS_PER_PIXEL 8u /* triangle ids of pixel p: [p * 8, p * 8 + 8) */
 #define K TV_K_FRONT     /* the reference's capacity, so both truncate alike */
+#define K_EXACT (K / 2) /* pvs_desc.k: a pixel with a longer list is deep (no umbrae) */
 
 static rnd_context* g_rnd;
 static uint32_t g_seed = 12345u;
@@ -74,7 +75,7 @@ typedef struct case_data {
  * pvs_kbuf_read fills its arrays as P3 reads them. */
 static void store_pixel(const pvs_kbuf* raw, pvs_kpages* pages, const uint32_t heads[TV_PVS_LISTS], pvs_kbuf* kb)
 {
-    *kb = (pvs_kbuf){.nearest_front = raw->nearest_front, .nearest_back = raw->nearest_back,
+    *kb = (pvs_kbuf){.k_exact = K_EXACT, .nearest_front = raw->nearest_front, .nearest_back = raw->nearest_back,
                      .nearest_culled_back = raw->nearest_culled_back, .front_lost = raw->front_lost,
                      .candidate_lost = raw->candidate_lost, .trim_lost = raw->trim_lost};
     if (heads)
@@ -240,6 +241,7 @@ static void upload(pvs_context* ctx, const case_data* c)
     view->width = view->height = SIDE;
     view->tile_w = view->tile_h = SIDE; /* one tile */
     view->k = k;
+    view->k_exact = K_EXACT;
     view->triangle_count = ctx->triangle_count;
 }
 

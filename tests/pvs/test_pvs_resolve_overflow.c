@@ -1,7 +1,7 @@
 /* Trim-sequence resolve (P3 reference) when lists overflow: every front is
  * kept, fronts behind the terminator, full umbra, trim and back lists, prior
  * faces, a carry that does not fit, and a k-buffer page pool that runs
- * out. */
+ * out, and a deep pixel (more entries than k, fewer than the lists hold). */
 #include "resolve_harness.h"
 #include "test.h"
 
@@ -64,7 +64,7 @@ static void test_overflow_behind_terminator(void)
     items[n++] = (item)F(1.0f, 1);
     items[n++] = (item)T(1.2f, 1);
     items[n++] = (item)B(1.5f);
-    items[n++] = (item)U(60.0f, 1);
+    items[n++] = (item)U(1000.0f, 1); /* behind every candidate */
     for (uint32_t i = 0; n < TV_K_FRONT + 8; i++)
         items[n++] = (item)C(2.0f + (float)i, 100 + i);
     pvs_pixel_state t = {0};
@@ -98,6 +98,35 @@ static void test_overflow_umbra_list(void)
     layer_result r2 = RUN(s, F(4.0f, 2), T(4.2f, 9), B(4.5f), F(6.0f, 3), B(6.5f));
     CHECK_OUT(r2, 3); /* 2 (eroded) inside region 0's umbra, 3 the terminator */
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
+}
+
+/* A deep pixel (a list longer than k_exact, none past its capacity) resolves
+ * without umbrae: [2, 2.5], validated, lies inside region 1's umbra and is
+ * hidden at a shallow pixel; at a deep one only [1, 1.5] itself is hidden,
+ * and 2 is output. F 5 terminates both. A pixel whose front list overflows
+ * behind that terminator is not deep: 2 stays hidden. */
+static void test_deep_pixel_without_umbrae(void)
+{
+    for (uint32_t k_exact = 3; k_exact >= 2; k_exact--) {
+        harness_k_exact = k_exact;
+        pvs_pixel_state s = {0};
+        layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
+                             U(4.0f, 2), F(5.0f, 3), B(6.0f));
+        TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_SEALED);
+        if (k_exact == 3)
+            CHECK_OUT(r, 1, 3);
+        else
+            CHECK_OUT(r, 1, 2, 3);
+    }
+    item items[TV_K_FRONT + 10] = {F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
+                                   U(4.0f, 2), F(5.0f, 3), B(6.0f)};
+    for (uint32_t i = 10; i < TV_K_FRONT + 10; i++)
+        items[i] = (item)F(7.0f + (float)i, 100 + i);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, TV_K_FRONT + 10);
+    TV_CHECK(r.overflowed && s.stencil == TV_STENCIL_SEALED);
+    CHECK_OUT(r, 1, 3);
+    harness_k_exact = 0;
 }
 
 /* Lost trims: every interval reaching back to the nearest lost trim counts
@@ -293,6 +322,7 @@ int main(void)
     TV_TEST_RUN(test_overflow_keeps_every_front);
     TV_TEST_RUN(test_overflow_behind_terminator);
     TV_TEST_RUN(test_overflow_umbra_list);
+    TV_TEST_RUN(test_deep_pixel_without_umbrae);
     TV_TEST_RUN(test_overflow_trim_list);
     TV_TEST_RUN(test_overflow_back_list);
     TV_TEST_RUN(test_prior_faces);
