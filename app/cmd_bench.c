@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "fs.h"
 #include "gt_cache.h"
+#include "interrupt.h"
 #include "stats.h"
 #include "log.h"
 #include "version.h"
@@ -219,8 +220,8 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
     pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1],
                         .gt_cache_dir = o->gt_cache, .gt_cache_scene = b->scene_id};
     bool ok = true, warm = false;
-    for (int d = 0; d < b->ndelta && ok; d++) {
-        int lo = 0, hi = 0, row = row_in_slice(b, scene, method, d, &lo, &hi), done = 0;
+    for (int d = 0; d < b->ndelta && ok && !tv_interrupted(); d++) {
+        int lo = 0, hi = 0, row = row_in_slice(b, scene, method, d, &lo, &hi), done = 0, kept = b->ncells;
         if (row < 0)
             continue;
         tv_eval_cell* cells = NULL;
@@ -239,7 +240,7 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
             free(ids);
             warm = true;
         }
-        for (int i = lo; ok && i < hi; i++, done++) {
+        for (int i = lo; ok && i < hi && !tv_interrupted(); i++, done++) {
             tv_bench_cell c = {.row = row, .index = i, .method = kind, .delta = b->deltas[d]};
             snprintf(c.scene, sizeof c.scene, "%s", spec);
             ok = tv_eval_cell_run(m, s->ctx, &s->scene, s->gpu, &ed, o->fov, &cells[i], mask, gt, err, sizeof err);
@@ -254,8 +255,10 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
         if (!ok && n > 0)
             tv_log(TV_LOG_ERROR, "%s, %s, delta %.2f: %s", spec, pvs_method_name(kind),
                     b->deltas[d], err);
-        if (ok)
+        if (ok && lo + done == hi)
             print_row(b, done);
+        else /* a row stopped by an error or a signal is left out of the report, not shown short */
+            b->ncells = kept;
         free(cells);
     }
     if (target)
@@ -291,7 +294,7 @@ static bool bench_scene(bench_run* b, int scene)
     uint8_t* mask = calloc(tris + 1, 1);
     uint8_t* gt = calloc(tris + 1, 1);
     bool ok = mask && gt;
-    for (int i = 0; ok && i < b->nmethod; i++)
+    for (int i = 0; ok && i < b->nmethod && !tv_interrupted(); i++)
         ok = bench_method(b, scene, &s, i, mask, gt);
     free(mask);
     free(gt);
@@ -483,7 +486,8 @@ int tv_cmd_bench(int argc, char** argv)
     bool ok = tv_mkdirs(o.out);
     if (!ok)
         tv_log(TV_LOG_ERROR, "%s: cannot create the output folder", o.out);
-    for (int i = 0; i < b.nscene && ok; i++)
+    tv_interrupt_install(); /* a signal stops the sweep between viewcells */
+    for (int i = 0; i < b.nscene && ok && !tv_interrupted(); i++)
         ok = bench_scene(&b, i);
     char cmd[4096] = "trimvr bench", date[64]; /* without --shard: the sweep's command, the same in every part */
     for (int i = 0; i < argc; i++) {
@@ -495,9 +499,16 @@ int tv_cmd_bench(int argc, char** argv)
     }
     time_t now = time(NULL);
     strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
-    if (ok)
+    int sig = tv_interrupted();
+    if (ok && !sig)
         ok = o.shard ? write_part(&b, cmd, date, shard, shards) : write_report(&b, cmd, date);
+    else if (!o.shard && b.ncells > 0) /* keep the complete rows; a part file is whole or absent (merge trusts it) */
+        write_report(&b, cmd, date);
     free(b.cells);
     free(b.units);
-    return ok ? 0 : 1;
+    if (sig)
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d: %s", sig,
+               o.shard ? "no part file written (run the shard again)"
+                       : "the report holds the rows completed so far, if any");
+    return sig ? tv_interrupt_status(sig) : ok ? 0 : 1;
 }
