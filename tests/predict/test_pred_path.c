@@ -101,6 +101,9 @@ static void test_missing_file(void)
     char err[256] = "";
     TV_CHECK(!pred_path_load("no/such/dir/path.csv", &path, err, sizeof err));
     TV_CHECK(strstr(err, "no/such/dir/path.csv: cannot open") == err);
+    /* a folder opens but does not read: the message says why, not only "read error" */
+    TV_CHECK(!pred_path_load(".", &path, err, sizeof err));
+    TV_CHECK(strcmp(err, ".: read error (Is a directory)") == 0);
 }
 
 static void test_round_trip(void)
