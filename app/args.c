@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "args.h"
+#include "cli_viewcell.h"
 #include "fs.h"
 #include "log.h"
 
@@ -14,7 +15,8 @@ static bool parse_float(const char* s, float* out)
     char* end;
     errno = 0;
     double v = strtod(s, &end);
-    if (end == s || *end != '\0' || errno != 0 || !isfinite(v))
+    /* finite as a float too: 1e300 would pass a range check like ">= 0" as inf */
+    if (end == s || *end != '\0' || errno != 0 || !isfinite(v) || !isfinite((float)v))
         return false;
     *out = (float)v;
     return true;
@@ -153,6 +155,14 @@ bool tv_arg_require(const char* name, double value, bool ok, const char* require
     if (!ok)
         tv_log(TV_LOG_ERROR, "--%s %g: must be %s", name, value, requirement);
     return ok;
+}
+
+bool tv_arg_viewcell(float delta, float fov, float fov_pvs)
+{
+    return tv_arg_require("delta", delta, delta >= 0.0f, ">= 0") &&
+           tv_arg_require("fov", fov, fov > 0.0f && fov < 180.0f, "in (0, 180) degrees") &&
+           tv_arg_require("fov-pvs", fov_pvs, fov_pvs > 0.0f && fov_pvs < TV_VIEWCELL_MAX_FOV_PVS,
+                          "in (0, 179) degrees");
 }
 
 bool tv_arg_gt_cache(const char* dir)

@@ -66,6 +66,11 @@ int tv_arg_kbuffer_layout(const char* value);
  * (for example "--frames -3: must be >= 0"). Returns ok. */
 bool tv_arg_require(const char* name, double value, bool ok, const char* requirement);
 
+/* --delta, --fov and --fov-pvs of a viewcell given on the command line (pvs,
+ * eval): each out of range gives tv_arg_require's line. Returns true when all
+ * three are in range. */
+bool tv_arg_viewcell(float delta, float fov, float fov_pvs);
+
 /* --gt-cache DIR: creates the folder (NULL: no cache, true). When it cannot,
  * prints "--gt-cache DIR: cannot create the folder" and returns false. */
 bool tv_arg_gt_cache(const char* dir);

@@ -7,14 +7,22 @@ int tv_bench_units(char* const* scenes, int nscene, const pvs_method_kind* metho
                    int max_cells, int cells_per_unit, tv_bench_unit* units)
 {
     int n = 0, row = 0, step = cells_per_unit > 0 ? cells_per_unit : max_cells;
+    long long per_row = ((long long)max_cells + step - 1) / step, rows = 0;
+    for (int s = 0; s < nscene; s++)
+        for (int m = 0; m < nmethod; m++)
+            rows += methods[m] != PVS_METHOD_Q3VIS || strncmp(scenes[s], "oa:", 3) == 0 ? ndelta : 0;
+    if (rows * per_row > TV_BENCH_MAX_UNITS)
+        return -1;
     for (int s = 0; s < nscene; s++)
         for (int m = 0; m < nmethod; m++) {
             if (methods[m] == PVS_METHOD_Q3VIS && strncmp(scenes[s], "oa:", 3) != 0)
                 continue;
             for (int d = 0; d < ndelta; d++, row++)
-                for (int c = 0; c < max_cells; c += step, n++)
+                for (int c = 0, end; c < max_cells; c = end, n++) {
+                    end = max_cells - c > step ? c + step : max_cells; /* c + step may pass INT_MAX */
                     if (units)
-                        units[n] = (tv_bench_unit){s, m, d, row, c, c + step < max_cells ? c + step : max_cells};
+                        units[n] = (tv_bench_unit){s, m, d, row, c, end};
+                }
         }
     return n;
 }
@@ -27,7 +35,7 @@ bool tv_bench_shard_parse(const char* s, int* i, int* n)
         return false;
     const char* rest = end + 1;
     long b = strtol(rest, &end, 10);
-    if (end == rest || *end || a < 0 || b < 1 || a >= b || b > 1000000)
+    if (end == rest || *end || a < 0 || b < 1 || a >= b || b > TV_BENCH_MAX_UNITS)
         return false;
     *i = (int)a;
     *n = (int)b;

@@ -18,9 +18,13 @@ typedef struct tv_bench_unit {
     int first_cell, end_cell; /* its viewcells: [first_cell, end_cell) of the scene's (at most max_cells) */
 } tv_bench_unit;
 
+/* The most units a sweep has, and the most shards --shard takes. */
+#define TV_BENCH_MAX_UNITS 1000000
+
 /* Fills units (may be NULL) and returns how many there are: one per row
  * when cells_per_unit is 0, else ceil(max_cells / cells_per_unit) per row
- * (a unit past a scene's last viewcell is empty). max_cells >= 1. */
+ * (a unit past a scene's last viewcell is empty); -1, filling nothing, when
+ * that is more than TV_BENCH_MAX_UNITS. max_cells >= 1. */
 int tv_bench_units(char* const* scenes, int nscene, const pvs_method_kind* methods, int nmethod, int ndelta,
                    int max_cells, int cells_per_unit, tv_bench_unit* units);
 

@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "fs.h"
 #include "gt_cache.h"
+#include "interrupt.h"
 #include "stats.h"
 #include "log.h"
 #include "version.h"
@@ -37,15 +38,26 @@ typedef struct bench_opts {
     bool jobs;
 } bench_opts;
 
-/* Splits a `sep`-separated list (copied into buf) into at most MAX_LIST items. */
-static int split(const char* list, char* buf, size_t size, char** items, char sep)
+/* Splits the `sep`-separated list of option --name (copied into buf) into its
+ * items. A list with no item, more than MAX_LIST or longer than buf is an
+ * error naming the option (-1), not a shorter list: a cut-off item would read
+ * as another number. */
+static int split(const char* name, const char* list, char* buf, size_t size, char** items, char sep)
 {
-    snprintf(buf, size, "%s", list);
-    int n = 0;
-    for (char *save = NULL, *t = strtok_r(buf, (char[]){sep, 0}, &save); t && n < MAX_LIST;
-         t = strtok_r(NULL, (char[]){sep, 0}, &save))
+    int n = (size_t)snprintf(buf, size, "%s", list) < size ? 0 : -1;
+    for (char *save = NULL, *t = n < 0 ? NULL : strtok_r(buf, (char[]){sep, 0}, &save); t;
+         t = strtok_r(NULL, (char[]){sep, 0}, &save)) {
+        if (n == MAX_LIST) {
+            n = -1;
+            break;
+        }
         items[n++] = t;
-    return n;
+    }
+    if (n >= 1)
+        return n;
+    tv_log(TV_LOG_ERROR, "--%s: expected 1 to %d items in at most %zu characters, got '%s'", name, MAX_LIST, size - 1,
+           list);
+    return -1;
 }
 
 typedef struct bench_run {
@@ -208,8 +220,8 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
     pvs_eval_desc ed = {.samples = (uint32_t)o->samples, .width = o->res[0], .height = o->res[1],
                         .gt_cache_dir = o->gt_cache, .gt_cache_scene = b->scene_id};
     bool ok = true, warm = false;
-    for (int d = 0; d < b->ndelta && ok; d++) {
-        int lo = 0, hi = 0, row = row_in_slice(b, scene, method, d, &lo, &hi), done = 0;
+    for (int d = 0; d < b->ndelta && ok && !tv_interrupted(); d++) {
+        int lo = 0, hi = 0, row = row_in_slice(b, scene, method, d, &lo, &hi), done = 0, kept = b->ncells;
         if (row < 0)
             continue;
         tv_eval_cell* cells = NULL;
@@ -228,7 +240,7 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
             free(ids);
             warm = true;
         }
-        for (int i = lo; ok && i < hi; i++, done++) {
+        for (int i = lo; ok && i < hi && !tv_interrupted(); i++, done++) {
             tv_bench_cell c = {.row = row, .index = i, .method = kind, .delta = b->deltas[d]};
             snprintf(c.scene, sizeof c.scene, "%s", spec);
             ok = tv_eval_cell_run(m, s->ctx, &s->scene, s->gpu, &ed, o->fov, &cells[i], mask, gt, err, sizeof err);
@@ -243,8 +255,10 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
         if (!ok && n > 0)
             tv_log(TV_LOG_ERROR, "%s, %s, delta %.2f: %s", spec, pvs_method_name(kind),
                     b->deltas[d], err);
-        if (ok)
+        if (ok && lo + done == hi)
             print_row(b, done);
+        else /* a row stopped by an error or a signal is left out of the report, not shown short */
+            b->ncells = kept;
         free(cells);
     }
     if (target)
@@ -280,7 +294,7 @@ static bool bench_scene(bench_run* b, int scene)
     uint8_t* mask = calloc(tris + 1, 1);
     uint8_t* gt = calloc(tris + 1, 1);
     bool ok = mask && gt;
-    for (int i = 0; ok && i < b->nmethod; i++)
+    for (int i = 0; ok && i < b->nmethod && !tv_interrupted(); i++)
         ok = bench_method(b, scene, &s, i, mask, gt);
     free(mask);
     free(gt);
@@ -290,16 +304,19 @@ static bool bench_scene(bench_run* b, int scene)
 static bool parse_lists(const bench_opts* o, bench_run* b)
 {
     char buf[512], *items[MAX_LIST];
-    b->ndelta = split(o->deltas, buf, sizeof buf, items, ',');
+    if ((b->ndelta = split("deltas", o->deltas, buf, sizeof buf, items, ',')) < 0)
+        return false;
     for (int i = 0; i < b->ndelta; i++) {
         char* end;
         b->deltas[i] = strtof(items[i], &end);
-        if (*end || !(b->deltas[i] >= 0.0f) || (i > 0 && b->deltas[i] <= b->deltas[i - 1])) {
+        if (*end || !(b->deltas[i] >= 0.0f && isfinite(b->deltas[i])) || (i > 0 && b->deltas[i] <= b->deltas[i - 1])) {
             tv_log(TV_LOG_ERROR, "--deltas: expected ascending metres >= 0, got '%s'", items[i]);
             return false;
         }
     }
-    int n = split(o->methods, buf, sizeof buf, items, ',');
+    int n = split("methods", o->methods, buf, sizeof buf, items, ',');
+    if (n < 0)
+        return false;
     for (int i = 0; i < n; i++) {
         if (b->nmethod == PVS_METHOD_COUNT || !pvs_method_from_name(items[i], &b->methods[b->nmethod++])) {
             tv_log(TV_LOG_ERROR, "--methods: unknown or repeated method '%s' (tr, gt, sas, "
@@ -307,15 +324,18 @@ static bool parse_lists(const bench_opts* o, bench_run* b)
             return false;
         }
     }
-    b->npos = o->pos ? split(o->pos, buf, sizeof buf, items, ';') : 0;
+    if ((b->npos = o->pos ? split("pos", o->pos, buf, sizeof buf, items, ';') : 0) < 0)
+        return false;
     for (int i = 0; i < b->npos; i++) {
         char tail;
-        if (sscanf(items[i], "%f,%f,%f%c", &b->pos[3 * i], &b->pos[3 * i + 1], &b->pos[3 * i + 2], &tail) != 3) {
-            tv_log(TV_LOG_ERROR, "--pos: expected X,Y,Z;X,Y,Z..., got '%s'", items[i]);
+        float* p = &b->pos[3 * i];
+        if (sscanf(items[i], "%f,%f,%f%c", &p[0], &p[1], &p[2], &tail) != 3 ||
+            !(isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]))) {
+            tv_log(TV_LOG_ERROR, "--pos: expected finite X,Y,Z;X,Y,Z..., got '%s'", items[i]);
             return false;
         }
     }
-    return b->ndelta > 0 && b->nmethod > 0;
+    return true;
 }
 
 /* Every option that changes a result, in one canonical string: parts of
@@ -434,7 +454,7 @@ int tv_cmd_bench(int argc, char** argv)
         return 2;
     float dir_len = sqrtf(o.dir[0] * o.dir[0] + o.dir[1] * o.dir[1] + o.dir[2] * o.dir[2]);
     if (o.every < 0 || o.samples < 1 || o.max_cells < 1 || o.cells_per_job < 0 || !(o.fov > 0.0f && o.fov <= o.fov_pvs) ||
-        !(o.fov_pvs < 179.0f) || !(dir_len > 0.0f)) {
+        !(o.fov_pvs < TV_VIEWCELL_MAX_FOV_PVS) || !(dir_len > 0.0f)) {
         tv_log(TV_LOG_ERROR, "need --path-every, --cells-per-job >= 0, --samples, --max-cells >= 1, "
                         "0 < --fov <= --fov-pvs < 179 and a non-zero --dir (see trimvr bench --help)");
         return 2;
@@ -445,9 +465,15 @@ int tv_cmd_bench(int argc, char** argv)
                 o.shard);
         return 2;
     }
-    b.nscene = split(o.scenes, b.scene_buf, sizeof b.scene_buf, b.scenes, ',');
+    if ((b.nscene = split("scenes", o.scenes, b.scene_buf, sizeof b.scene_buf, b.scenes, ',')) < 0)
+        return 2;
     int cells = b.npos > 0 ? b.npos : o.max_cells; /* the most viewcells a scene can have */
     b.nunits = tv_bench_units(b.scenes, b.nscene, b.methods, b.nmethod, b.ndelta, cells, o.cells_per_job, NULL);
+    if (b.nunits < 0) {
+        tv_log(TV_LOG_ERROR, "--max-cells %d, --cells-per-job %d: more than %d units (scene x method x delta x "
+               "viewcells / cells per job)", o.max_cells, o.cells_per_job, TV_BENCH_MAX_UNITS);
+        return 2;
+    }
     if (!(b.units = malloc(((size_t)b.nunits + 1) * sizeof *b.units))) {
         tv_log(TV_LOG_ERROR, "out of memory for %d units", b.nunits);
         return 1;
@@ -462,7 +488,8 @@ int tv_cmd_bench(int argc, char** argv)
     bool ok = tv_mkdirs(o.out);
     if (!ok)
         tv_log(TV_LOG_ERROR, "%s: cannot create the output folder", o.out);
-    for (int i = 0; i < b.nscene && ok; i++)
+    tv_interrupt_install(); /* a signal stops the sweep between viewcells */
+    for (int i = 0; i < b.nscene && ok && !tv_interrupted(); i++)
         ok = bench_scene(&b, i);
     char cmd[4096] = "trimvr bench", date[64]; /* without --shard: the sweep's command, the same in every part */
     for (int i = 0; i < argc; i++) {
@@ -474,9 +501,16 @@ int tv_cmd_bench(int argc, char** argv)
     }
     time_t now = time(NULL);
     strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
-    if (ok)
+    int sig = tv_interrupted();
+    if (ok && !sig)
         ok = o.shard ? write_part(&b, cmd, date, shard, shards) : write_report(&b, cmd, date);
+    else if (!o.shard && b.ncells > 0) /* keep the complete rows; a part file is whole or absent (merge trusts it) */
+        write_report(&b, cmd, date);
     free(b.cells);
     free(b.units);
-    return ok ? 0 : 1;
+    if (sig)
+        tv_log(TV_LOG_ERROR, "interrupted by signal %d: %s", sig,
+               o.shard ? "no part file written (run the shard again)"
+                       : "the report holds the rows completed so far, if any");
+    return sig ? tv_interrupt_status(sig) : ok ? 0 : 1;
 }

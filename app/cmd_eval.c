@@ -73,7 +73,7 @@ static int make_cells(const eval_opts* o, tv_eval_cell** out, char* scene_spec, 
         *out = calloc(1, sizeof **out);
         if (!*out || !tv_viewcell_make(o->pos, o->dir, isnan(o->up[0]) ? NULL : o->up, o->delta, o->fov, o->fov_pvs,
                                         &(*out)->vc)) {
-            tv_log(TV_LOG_ERROR, "--dir must be non-zero, --up not parallel to it and FOVs in (0, 180)");
+            tv_log(TV_LOG_ERROR, "--dir must be non-zero (components below 1e19) and --up not parallel to it");
             free(*out);
             *out = NULL;
             return -1;
@@ -135,12 +135,12 @@ static bool validate(const eval_opts* o, pvs_method_desc* md)
     if (layout < 0 || !tv_arg_require("k", o->k, o->k >= 1, ">= 1") ||
         !tv_arg_require("k-deep", o->k_deep, o->k_deep >= 0, ">= 0") ||
         !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1") ||
-        !tv_arg_gt_cache(o->gt_cache))
+        !tv_arg_viewcell(o->delta, o->fov, o->fov_pvs) || !tv_arg_gt_cache(o->gt_cache))
         return false;
-    if ((!o->path && isnan(o->pos[0])) || o->every < 1 || o->samples < 1 || !(o->delta >= 0.0f) ||
+    if ((!o->path && isnan(o->pos[0])) || o->every < 1 || o->samples < 1 ||
         !pvs_method_from_name(o->method, &md->kind)) {
-        tv_log(TV_LOG_ERROR, "need --pos or --path, a known --method, --every >= 1, "
-               "--samples >= 1 and --delta >= 0 (see trimvr eval --help)");
+        tv_log(TV_LOG_ERROR, "need --pos or --path, a known --method, --every >= 1 and "
+               "--samples >= 1 (see trimvr eval --help)");
         return false;
     }
     if (o->explain && md->kind != PVS_METHOD_TR) {

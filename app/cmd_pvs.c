@@ -121,13 +121,12 @@ int tv_cmd_pvs(int argc, char** argv)
         !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0") ||
         !tv_arg_require("kbuffer-pages", pages, pages >= 0, ">= 0") ||
         !tv_arg_require("max-layers", max_layers, max_layers >= -1, ">= -1") ||
-        !tv_arg_require("repeat", repeat, repeat >= 1, ">= 1"))
+        !tv_arg_require("repeat", repeat, repeat >= 1, ">= 1") || !tv_arg_viewcell(delta, fov, fov_pvs))
         return 2;
     if (!scene || isnan(pos[0]) || !pvs_method_from_name(method, &md.kind) ||
         !tv_viewcell_make(pos, dir, isnan(up[0]) ? NULL : up, delta, fov, fov_pvs, &vc)) {
-        tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir, --up not parallel to it, "
-               "--delta >= 0 and "
-               "FOVs in (0, 180) (see trimvr pvs --help)");
+        tv_log(TV_LOG_ERROR, "need --scene, --pos, a known --method, a non-zero --dir (components below 1e19) and "
+               "--up not parallel to it (see trimvr pvs --help)");
         return 2;
     }
     tv_app_scene s;

@@ -17,9 +17,10 @@ static void finish(pred_viewcell* vc, float delta, float fov_deg, float fov_pvs_
 bool tv_viewcell_make(const float pos[3], const float dir[3], const float* up, float delta, float fov_deg,
                       float fov_pvs_deg, pred_viewcell* out)
 {
+    /* a float length of inf (components beyond about 1e19) would turn dir into a zero vector */
     float len = sqrtf(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-    if (!(len > 0.0f) || !(fov_deg > 0.0f && fov_deg < 180.0f) || !(fov_pvs_deg > 0.0f && fov_pvs_deg < 180.0f) ||
-        !(delta >= 0.0f))
+    if (!(len > 0.0f && isfinite(len)) || !(fov_deg > 0.0f && fov_deg < 180.0f) ||
+        !(fov_pvs_deg > 0.0f && fov_pvs_deg < TV_VIEWCELL_MAX_FOV_PVS) || !(delta >= 0.0f))
         return false;
     memset(out, 0, sizeof *out);
     /* A unit vector is taken as given, to the last bit: a replay's pvs.csv
@@ -40,7 +41,7 @@ bool tv_viewcell_make(const float pos[3], const float dir[3], const float* up, f
     float d = ref[0] * f[0] + ref[1] * f[1] + ref[2] * f[2];
     float u[3] = {ref[0] - d * f[0], ref[1] - d * f[1], ref[2] - d * f[2]};
     float ul = sqrtf(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    if (!(ul > 1.75e-3f * rl)) /* sin(0.1 degree): no direction to turn the frustum by */
+    if (!(ul > 1.75e-3f * rl) || !isfinite(ul)) /* sin(0.1 degree): no direction to turn the frustum by */
         return false;
     bool as_given = fabsf(d) <= 1e-6f * rl && fabsf(rl - 1.0f) <= 1e-6f; /* unit and perpendicular */
     for (int i = 0; i < 3; i++) {

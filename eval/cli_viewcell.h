@@ -15,10 +15,16 @@
  * fov_pvs_deg (square frustum). A unit dir, and a unit up perpendicular to
  * it (both within 1e-6), are kept bit for bit: a replay's viewcell (its
  * pvs.csv) is reproduced only with its own up and digits, and a facing test
- * at an edge-on triangle can turn on the last bit. False when dir is zero, up is within 0.1 degree of parallel to
- * it, or an angle is out of (0, 180). */
+ * at an edge-on triangle can turn on the last bit. False when dir is zero or too long for a float length (a
+ * component beyond about 1e19; up alike), up is within 0.1 degree of parallel to it, fov_deg is out of
+ * (0, 180) or fov_pvs_deg out of (0, TV_VIEWCELL_MAX_FOV_PVS). */
 bool tv_viewcell_make(const float pos[3], const float dir[3], const float* up, float delta, float fov_deg,
                       float fov_pvs_deg, pred_viewcell* out);
+
+/* The widest PVS FOV, as replay and bench take it: near 180 degrees the
+ * frustum degenerates (at 179.9 the unit scene's PVS loses triangles that
+ * the 90-degree one holds). */
+#define TV_VIEWCELL_MAX_FOV_PVS 179.0f
 
 /* The use window of these viewcells (what scenes with movers are sampled
  * over): the replay's default, one 50 ms latency plus one 90 Hz frame, from

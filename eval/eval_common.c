@@ -16,15 +16,25 @@ int tv_eval_path_cells(const char* file, int every, int max_cells, float delta, 
         return -1;
     if (!scene_spec[0])
         snprintf(scene_spec, spec_size, "%s", path.scene);
-    int frames = (int)(pred_path_duration(&path) * 90.0) + 1;
-    if (every <= 0) /* max_cells spread evenly along the path */
-        every = max_cells > 0 && frames > max_cells ? frames / max_cells : 1;
-    int n = (frames + every - 1) / every;
-    if (max_cells > 0 && n > max_cells)
-        n = max_cells;
+    /* counted in double: a long path's frames, or frames + a huge --every, passed INT_MAX */
+    double frames = floor(pred_path_duration(&path) * 90.0) + 1.0;
+    double step = every > 0                              ? every
+                  : max_cells > 0 && frames > max_cells ? floor(frames / max_cells) /* spread evenly */
+                                                         : 1.0;
+    double cells = ceil(frames / step);
+    if (max_cells > 0 && cells > max_cells)
+        cells = max_cells;
+    if (cells > TV_EVAL_MAX_PATH_CELLS) {
+        snprintf(err, err_size, "%s: %.0f s gives %.3g viewcells at one every %.0f frames, more than %d; pass "
+                 "--max-cells", file, pred_path_duration(&path), cells, step, TV_EVAL_MAX_PATH_CELLS);
+        pred_path_free(&path);
+        *out = NULL;
+        return -1;
+    }
+    int n = (int)cells;
     *out = calloc((size_t)n, sizeof **out);
     for (int i = 0; *out && i < n; i++) {
-        double t = path.poses[0].t + (double)i * every / 90.0;
+        double t = path.poses[0].t + (double)i * step / 90.0;
         pred_pose head, before, after;
         pred_path_sample(&path, t, &head);
         pred_path_sample(&path, t - 0.05, &before);
@@ -43,7 +53,7 @@ int tv_eval_path_cells(const char* file, int every, int max_cells, float delta, 
     }
     pred_path_free(&path);
     if (!*out) {
-        snprintf(err, err_size, "out of memory for %d viewcells", n);
+        snprintf(err, err_size, "%s: out of memory for %d viewcells", file, n);
         return -1;
     }
     return n;

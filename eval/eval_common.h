@@ -29,10 +29,14 @@ typedef struct tv_eval_cell {
     int layer_cells;
 } tv_eval_cell;
 
+/* The most viewcells tv_eval_path_cells gives (at seconds each, a million take weeks). */
+#define TV_EVAL_MAX_PATH_CELLS 1000000
+
 /* One viewcell every `every` display frames (90 Hz) of the path in `file`
  * (every <= 0: max_cells of them spread evenly), at most max_cells (0:
  * all), of radius delta and the given FOVs, into a malloc'ed array (*out).
- * When scene_spec is empty it receives the path's '# scene:' line. Returns the count, or -1 with a one-line reason. */
+ * When scene_spec is empty it receives the path's '# scene:' line. Returns the count, or -1 with a one-line
+ * reason (also when that is more than TV_EVAL_MAX_PATH_CELLS). */
 int tv_eval_path_cells(const char* file, int every, int max_cells, float delta, float fov_deg, float fov_pvs_deg,
                        tv_eval_cell** out, char* scene_spec, size_t spec_size, char* err, size_t err_size);
 

@@ -129,6 +129,9 @@ static bool _parse(char* text, pred_path* out, const char* file, char* err, size
                            v[COL_QW] * v[COL_QW]);
         if (norm < 0.5 || norm > 2.0)
             return pred_text_fail(err, err_size, file, line_no, "quaternion norm %g is not near 1", norm);
+        if (fabs(v[COL_T]) > PRED_PATH_MAX_TIME_S)
+            return pred_text_fail(err, err_size, file, line_no, "time %g is beyond %g s", v[COL_T],
+                                  PRED_PATH_MAX_TIME_S);
         for (int i = 0; i < 3; i++)
             if (fabs(v[COL_PX + i]) > PRED_PATH_MAX_COORD_M)
                 return pred_text_fail(err, err_size, file, line_no, "position %g in column %s is beyond %g m",

@@ -29,6 +29,11 @@ typedef struct pred_path {
  * renderer's float coordinates have no centimetres left there. */
 #define PRED_PATH_MAX_COORD_M 1e6
 
+/* Times beyond this many seconds from 0 are refused: a double keeps less than
+ * 2 us there, and a 1 ms sensor step from 1e15 s on does not advance the
+ * clock (a replay never ends). */
+#define PRED_PATH_MAX_TIME_S 1e10
+
 /* Loads `file` into `out` (zeroed first). On failure returns false, leaves
  * `out` empty and writes one line "FILE:LINE: problem" (or "FILE: problem"
  * when no line applies) into err. At least one sample is required. */

@@ -42,7 +42,7 @@ char* pred_text_read_file(const char* file, size_t* size, char* err, size_t err_
             buf = grown;
         }
     }
-    bool read_error = ferror(f) != 0;
+    int read_error = ferror(f) ? errno : 0; /* EISDIR: a folder given as the file */
     fclose(f);
     if (!buf) {
         pred_text_fail(err, err_size, file, 0, "out of memory");
@@ -50,7 +50,10 @@ char* pred_text_read_file(const char* file, size_t* size, char* err, size_t err_
     }
     if (read_error || memchr(buf, '\0', n)) {
         free(buf);
-        pred_text_fail(err, err_size, file, 0, read_error ? "read error" : "binary data (NUL byte) in a text file");
+        if (read_error)
+            pred_text_fail(err, err_size, file, 0, "read error (%s)", strerror(read_error));
+        else
+            pred_text_fail(err, err_size, file, 0, "binary data (NUL byte) in a text file");
         return NULL;
     }
     buf[n] = '\0';

@@ -170,13 +170,13 @@ static bool _row(import_state* st, char* line, size_t line_no, pred_path* out, p
     }
     /* Times are kept relative to the first sample's, in whole units and a
      * fraction, so that nanosecond stamps keep their precision; a stamp too
-     * far from the first one for that (or for a finite double) is an error,
-     * not a wrapped or infinite time. */
+     * far from the first one for that (or for a path file: PRED_PATH_MAX_TIME_S)
+     * is an error, not a wrapped or infinite time. */
     double scale = k_formats[st->format].seconds_per_unit;
     long long dwhole;
     double t = 0.0;
     if (__builtin_sub_overflow(whole, st->t0_whole, &dwhole) ||
-        !isfinite(t = (double)dwhole * scale + (frac - st->t0_frac) * scale))
+        !(fabs(t = (double)dwhole * scale + (frac - st->t0_frac) * scale) <= PRED_PATH_MAX_TIME_S))
         return pred_text_fail(err, err_size, st->file, line_no, "time '%s' in column %s is too far from the first row's",
                               fields[st->field_of[COL_T]], names[COL_T]);
     pred_pose pose = {.t = t,

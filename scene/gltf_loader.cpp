@@ -133,6 +133,14 @@ bool read_indices(Loader& L, const tinygltf::Primitive& prim, size_t vertex_coun
     if (!p)
         return false;
     const tinygltf::Accessor& a = L.model.accessors[prim.indices];
+    // glTF 2.0 (3.7.2.1): indices are unsigned-integer scalars; a float NaN cast to uint32_t is undefined
+    if (a.type != TINYGLTF_TYPE_SCALAR || (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+                                           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+                                           a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)) {
+        L.problem = "index accessor " + std::to_string(prim.indices) + " is not of unsigned-integer scalars (type " +
+                    std::to_string(a.type) + ", component type " + std::to_string(a.componentType) + ")";
+        return false;
+    }
     out.resize(a.count);
     for (size_t i = 0; i < a.count; i++) {
         const unsigned char* e = p + i * stride;

@@ -69,6 +69,10 @@ static void test_errors_name_file_and_line(void)
         {"t,px,py,pz,qx,qy,qz,qw\n0,nan,0,0,0,0,0,1\n", ":2: non-finite value 'nan' in column px"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n1,0,0,inf,0,0,0,1\n", ":3: non-finite value 'inf' in column pz"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,1e300,0,0,0,0,1\n", ":2: position 1e+300 in column py is beyond 1e+06 m"},
+        /* a replay from 1e15 s never ended: its 1 ms sensor steps did not advance the clock */
+        {"t,px,py,pz,qx,qy,qz,qw\n1e15,0,0,0,0,0,0,1\n1.000000000000125e15,0,0,0,0,0,0,1\n",
+         ":2: time 1e+15 is beyond 1e+10 s"},
+        {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n-2e10,0,0,0,0,0,0,1\n", ":3: time -2e+10 is beyond 1e+10 s"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,0.3\n", ":2: quaternion norm 0.3"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,2,0,0,1\n", ":2: quaternion norm"},
         {"t,px,py,pz,qx,qy,qz,qw\n0,0,0,0,0,0,0,1\n#x\n0.5,0,0,0,0,0,0,1\n0.2,0,0,0,0,0,0,1\n",
@@ -97,6 +101,9 @@ static void test_missing_file(void)
     char err[256] = "";
     TV_CHECK(!pred_path_load("no/such/dir/path.csv", &path, err, sizeof err));
     TV_CHECK(strstr(err, "no/such/dir/path.csv: cannot open") == err);
+    /* a folder opens but does not read: the message says why, not only "read error" */
+    TV_CHECK(!pred_path_load(".", &path, err, sizeof err));
+    TV_CHECK(strcmp(err, ".: read error (Is a directory)") == 0);
 }
 
 static void test_round_trip(void)

@@ -154,6 +154,9 @@ static void test_malformed(void)
                  "optitrack-time-overflow.csv:3: time '9000000000000000000' in column t_header_s is too far from the first row's");
     expect_error("optitrack-time-infinite.csv", PRED_TRACE_AUTO,
                  "optitrack-time-infinite.csv:3: time '1e308' in column t_header_s is too far from the first row's");
+    /* finite, but beyond what a path file holds (PRED_PATH_MAX_TIME_S): path import wrote a path no command loads */
+    expect_error("optitrack-time-far.csv", PRED_TRACE_AUTO,
+                 "optitrack-time-far.csv:3: time '1e11' in column t_header_s is too far from the first row's");
     pred_trace_format f;
     TV_CHECK(pred_trace_format_from_name("optitrack", &f) && f == PRED_TRACE_OPTITRACK);
     TV_CHECK(!pred_trace_format_from_name("vive", &f));
