@@ -375,15 +375,16 @@ static bool write_part(const bench_run* b, const char* command, const char* date
     return true;
 }
 
-/* A whole sweep's results as bench.md, bench.csv, bench.json and plots. */
-static bool write_report(const bench_run* b, const char* command, const char* date)
+/* A sweep's results as bench.md, bench.csv, bench.json and plots; `stopped`
+ * (NULL for a whole sweep) says why it ended early, in the report itself. */
+static bool write_report(const bench_run* b, const char* command, const char* date, const char* stopped)
 {
     const bench_opts* o = b->o;
     tv_bench_row* rows = NULL;
     int nrows = tv_bench_rows(b->cells, b->ncells, &rows);
     tv_bench_info info = {.command_line = command, .date = date, .device = b->device, .version = TRIMVR_VERSION,
                           .res = {o->res[0], o->res[1]}, .pvs_res = {o->pvs_res[0], o->pvs_res[1]},
-                          .samples = o->samples, .fov = o->fov, .fov_pvs = o->fov_pvs,
+                          .samples = o->samples, .fov = o->fov, .fov_pvs = o->fov_pvs, .stopped = stopped,
                           .wall_s = (tv_now_ms() - b->t0) / 1000.0};
     char err[4300];
     bool ok = nrows > 0;
@@ -503,9 +504,13 @@ int tv_cmd_bench(int argc, char** argv)
     strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
     int sig = tv_interrupted();
     if (ok && !sig)
-        ok = o.shard ? write_part(&b, cmd, date, shard, shards) : write_report(&b, cmd, date);
-    else if (!o.shard && b.ncells > 0) /* keep the complete rows; a part file is whole or absent (merge trusts it) */
-        write_report(&b, cmd, date);
+        ok = o.shard ? write_part(&b, cmd, date, shard, shards) : write_report(&b, cmd, date, NULL);
+    else if (!o.shard && b.ncells > 0) { /* keep the complete rows; a part file is whole or absent (merge trusts it) */
+        char why[64] = "stopped by an error";
+        if (sig)
+            snprintf(why, sizeof why, "interrupted by signal %d", sig);
+        write_report(&b, cmd, date, why);
+    }
     free(b.cells);
     free(b.units);
     if (sig)

@@ -105,6 +105,8 @@ static bool write_json(const char* dir, const tv_bench_info* in, const tv_bench_
             in->device, in->version, in->wall_s);
     if (in->merged)
         fprintf(f, "  \"merged\": \"%s\",\n", in->merged);
+    if (in->stopped)
+        fprintf(f, "  \"interrupted\": true, \"stopped\": \"%s\",\n", in->stopped);
     fprintf(f, "  \"ci\": \"95 %% t-intervals over viewcells: fng_pixels_ci95 of the mean, pvs_over_gt_ci95 of the "
                "ratio of means by linearisation\",\n");
     fprintf(f, "  \"sample_res\": [%u, %u], \"pvs_res\": [%u, %u], \"samples\": %d, \"fov_deg\": %.2f, "
@@ -224,6 +226,8 @@ static bool write_md(const char* dir, const tv_bench_info* in, const tv_bench_ro
                "(eye FOV %.0f°); PVS resolution %ux%u, PVS FOV %.0f°.\n",
             in->version, in->date, in->device, in->wall_s, in->samples, in->res[0], in->res[1], in->fov,
             in->pvs_res[0], in->pvs_res[1], in->fov_pvs);
+    if (in->stopped)
+        fprintf(f, "\n**Incomplete: %s.** The rows are those completed before it.\n", in->stopped);
     fprintf(f, "\nColumns: PVS/GT = PVS size over ground-truth size; GT compl. = GT size over its Chao2 estimate "
                "from the triangles seen in one and in two views (how complete the sampled GT is), PVS/GT est = "
                "PVS size over that estimate; FP, FN = false-positive and false-negative "

@@ -53,6 +53,7 @@ typedef struct tv_bench_info {
     const char* device;     /* Vulkan device name */
     const char* version;    /* trimvr's code version (git describe at build time) */
     const char* merged;     /* NULL for one run; else what was merged ("12 parts from ...") */
+    const char* stopped;    /* NULL for a whole sweep; else why it stopped early (the rows are those completed) */
     unsigned res[2], pvs_res[2];
     int samples;
     float fov, fov_pvs;

@@ -1,6 +1,6 @@
 #!/bin/sh
-# SIGINT to `trimvr bench` once its first row is done: exit 130, stderr says
-# it was interrupted, and bench.csv holds only complete rows (each of CELLS
+# SIGINT to `trimvr bench` once its first row is done: exit 130, stderr,
+# bench.json and bench.md say it was interrupted, and bench.csv holds only complete rows (each of CELLS
 # viewcells), fewer than the sweep has.
 #   bench_sigint.sh TRIMVR OUT CELLS bench-option...
 set -u
@@ -29,5 +29,7 @@ cat "$err"
 [ "$code" -eq 130 ] || fail "exit status $code after SIGINT, expected 130"
 grep -q 'interrupted by signal 2' "$err" || fail "stderr does not say the run was interrupted"
 [ -f "$out/bench.csv" ] || fail "no bench.csv: the finished rows were lost"
+grep -q '"interrupted": true, "stopped": "interrupted by signal 2"' "$out/bench.json" || fail "bench.json does not say the sweep was interrupted"
+grep -q 'Incomplete: interrupted by signal 2' "$out/bench.md" || fail "bench.md does not say the sweep was interrupted"
 awk -F, -v cells="$cells" 'NR > 1 { rows++; if ($4 != cells) { print "FAIL: row of " $4 " viewcells: " $0; exit 1 } }
     END { if (rows < 1) { print "FAIL: no row"; exit 1 } print "ok: " rows " complete rows kept" }' "$out/bench.csv"
