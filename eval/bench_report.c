@@ -19,7 +19,7 @@ static const char* const k_cols[] = {
     "p3_ms", "p4_ms", "layers", "active_pixels", "mean_trim_sequence", "kbuffer_alloc_bytes",
     "kbuffer_used_bytes", "overflow_pixels", "views", "fng_fraction_worst_cell", "psnr_worst_cell_db",
     "gt_completeness", "gt_est_tris", "pvs_over_gt_est_tris", "ssim_mean", "ssim_min",
-    "fng_pixels_ci95", "pvs_over_gt_ci95", "worst_cell", "fng_pixels_worst_cell"};
+    "fng_pixels_ci95", "pvs_over_gt_ci95", "worst_cell", "fng_pixels_worst_cell", "overflow_share"};
 enum { COL_COUNT = (int)(sizeof k_cols / sizeof k_cols[0]) };
 
 static double ratio(double a, double b)
@@ -40,7 +40,8 @@ static void row_values(const tv_bench_row* r, double* v)
         tr->ms[3], tr->ms[4], tr->layers, (double)tr->active_pixels, tr->mean_sequence, (double)tr->kbuffer_bytes,
         (double)tr->kbuffer_bytes_used, (double)tr->overflow_pixels, r->views, r->fng_fraction_worst_cell,
         r->psnr_worst_cell_db, m->gt_completeness, m->gt_est_tris, ratio(m->pvs_tris, m->gt_est_tris), m->ssim_mean,
-        m->ssim_min, r->fng_ci95, r->pvs_over_gt_ci95, r->worst_index, r->worst.m.fng_pixels_mean};
+        m->ssim_min, r->fng_ci95, r->pvs_over_gt_ci95, r->worst_index, r->worst.m.fng_pixels_mean,
+        r->mean.overflow_share};
     memcpy(v, x, sizeof x);
 }
 
@@ -201,16 +202,18 @@ static void md_tables(FILE* f, const tv_bench_row* rows, int first, int end)
     if (!any_tr)
         return;
     fprintf(f, "\ntr per phase (ms, means over viewcells), layers, resolves and k-buffers:\n\n"
-               "| Δ cm | P0 | P1 | P2 | P3 | P4 | layers | active px | trim seq | k-buf MB | used MB | overflow px |\n"
-               "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+               "| Δ cm | P0 | P1 | P2 | P3 | P4 | layers | active px | trim seq | k-buf MB | used MB | overflow px | "
+               "overflow / active |\n"
+               "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int i = first; i < end; i++) {
         const pvs_stats* t = &rows[i].mean.st.tr;
         if (rows[i].method != PVS_METHOD_TR)
             continue;
-        fprintf(f, "| %.0f | %.1f | %.1f | %.1f | %.1f | %.1f | %u | %llu | %.2f | %.1f | %.1f | %llu |\n",
+        fprintf(f, "| %.0f | %.1f | %.1f | %.1f | %.1f | %.1f | %u | %llu | %.2f | %.1f | %.1f | %llu | %.2f %% |\n",
                 100.0 * rows[i].delta, t->ms[0], t->ms[1], t->ms[2], t->ms[3], t->ms[4], t->layers,
                 (unsigned long long)t->active_pixels, t->mean_sequence, t->kbuffer_bytes / 1048576.0,
-                t->kbuffer_bytes_used / 1048576.0, (unsigned long long)t->overflow_pixels);
+                t->kbuffer_bytes_used / 1048576.0, (unsigned long long)t->overflow_pixels,
+                100.0 * rows[i].mean.overflow_share);
     }
 }
 

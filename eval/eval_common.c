@@ -207,6 +207,11 @@ static void keep_layers(tv_eval_cell* c)
     c->st.tr.per_layer = NULL;
 }
 
+static double share(uint64_t part, uint64_t whole)
+{
+    return whole ? (double)part / (double)whole : 0.0;
+}
+
 bool tv_eval_cell_run(pvs_method* m, rnd_context* rnd, const scn_scene* scene, const rnd_gpu_scene* gpu,
                       const pvs_eval_desc* ed, float eye_fov_deg, tv_eval_cell* c, uint8_t* mask, uint8_t* gt,
                       char* err, size_t err_size)
@@ -227,6 +232,7 @@ bool tv_eval_cell_run(pvs_method* m, rnd_context* rnd, const scn_scene* scene, c
         return false;
     keep_layers(c);
     c->pvs_ms = c->st.total_ms;
+    c->overflow_share = share(c->st.tr.overflow_pixels, c->st.tr.active_pixels);
     memset(mask, 0, scene->triangle_count);
     for (uint32_t t = 0; t < count; t++)
         mask[ids[t]] = 1;
@@ -242,6 +248,7 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
     pvs_eval_result* m = &r.m;
     pvs_stats* tr = &r.st.tr;
     double mse = 0.0;
+    uint64_t active_sum = 0;
     m->psnr_min_db = INFINITY;
     m->ssim_min = INFINITY;
     for (int i = 0; i < n; i++) {
@@ -283,6 +290,7 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
         tr->overflow_pixels += xt->overflow_pixels;
         tr->layers += xt->layers / (uint32_t)n;
         tr->active_pixels += xt->active_pixels / (uint64_t)n;
+        active_sum += xt->active_pixels;
         tr->mean_sequence += xt->mean_sequence / n;
         for (uint32_t l = 0; l < c[i].layer_count; l++)
             add_layer(&r.layers[l], &c[i].layers[l]);
@@ -290,6 +298,7 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
         r.layer_cells += c[i].layer_cells;
     }
     m->psnr_mean_db = mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
+    r.overflow_share = share(tr->overflow_pixels, active_sum);
     return r;
 }
 
@@ -340,6 +349,7 @@ void tv_eval_json_metrics(FILE* f, const tv_eval_cell* c, const char* indent)
     tv_json_num(f, "kbuffer_alloc_bytes", (double)tr->kbuffer_bytes, ", ");
     tv_json_num(f, "kbuffer_used_bytes", (double)tr->kbuffer_bytes_used, ", ");
     tv_json_num(f, "overflow_pixels", (double)tr->overflow_pixels, ", ");
+    tv_json_num(f, "overflow_share", c->overflow_share, ", ");
     tv_json_num(f, "layers", tr->layers, ", ");
     tv_json_num(f, "active_pixels", (double)tr->active_pixels, ", ");
     tv_json_num(f, "mean_trim_sequence", tr->mean_sequence, ",\n");

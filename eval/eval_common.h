@@ -22,6 +22,10 @@ typedef struct tv_eval_cell {
     pvs_eval_result m;
     pvs_method_stats st; /* st.tr.per_layer is NULL: the figures are in layers */
     double pvs_ms;
+    /* tr: overflowing pixels over active pixels, both summed over layers and,
+     * in a mean, over viewcells (the issue-17 target is a share; the two
+     * counts above are a sum and a mean, so their ratio is not) */
+    double overflow_share;
     /* tr: per-layer figures summed over layer_cells viewcells (1 for one
      * cell; tv_eval_mean sums), layer_count entries */
     pvs_layer_stats layers[TV_EVAL_MAX_LAYERS];
