@@ -73,10 +73,10 @@ layout(push_constant) uniform pvs_push_block {
 // llvmpipe (lavapipe) counts the back-edges of every loop an invocation of
 // a shader runs (one SIMD group: 8 lanes at 256 bits) against one budget of
 // 65535 (LP_MAX_TGSI_LOOP_ITERATIONS) and, once it is spent, ends every loop
-// after the iteration it is in, silently: P3's quadratic loops over long
-// sequences spend it (docs/journal/2026-12-03-k64.md), and their lanes'
-// results are then wrong. This loop of view.k + 1 >= 2 iterations runs one
-// when the budget is spent; other devices have no such budget.
+// after the iteration it is in, silently, and its lanes' results are wrong:
+// P3's validate, cubic in the sequence until regions_build, spent it at long
+// sequences (docs/journal/2026-12-03-k64.md). This loop of view.k + 1 >= 2
+// iterations runs one when the budget is spent; other devices have none.
 bool loop_budget_spent()
 {
     uint trips = 0u;
