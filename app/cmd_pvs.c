@@ -27,6 +27,9 @@ static void print_tr_stats(const pvs_stats* s)
            s->kbuffer_regrows, s->kbuffer_regrows == 1 ? "" : "s", (unsigned long long)s->kbuffer_lost);
     printf("overflow          %llu pixels, %llu front fragments (handled conservatively)\n",
            (unsigned long long)s->overflow_pixels, (unsigned long long)s->overflow_fronts);
+    if (s->loop_budget_pixels)
+        printf("loop budget       %llu pixel resolves ran out of it (llvmpipe): unreliable\n",
+               (unsigned long long)s->loop_budget_pixels);
     printf("per layer         tris: in the layer / fronts + backs drawn, regions: trim regions, active: pixels\n"
            "                  resolved, seq: mean trim sequence, ovf: overflowing pixels, KiB: k-buffer pages taken\n"
            "                  (flat layout: entries read)\n");

@@ -4,6 +4,7 @@
 #include "gpu_internal.h"
 
 #include "clock.h"
+#include "log.h"
 
 #include <assert.h>
 #include <math.h>
@@ -421,6 +422,10 @@ static void collect_stats(pvs_context* ctx, pvs_stats* st)
     st->silhouettes = c[TV_PVS_C_REGIONS]; /* numbered afresh per tile, so one tile's */
     st->overflow_fronts = c[TV_PVS_C_OVERFLOW_FRONTS];
     st->coop_pixels = c[TV_PVS_C_COOP_TOTAL];
+    st->loop_budget_pixels = c[TV_PVS_C_LOOP_BUDGET];
+    if (st->loop_budget_pixels)
+        tv_log(TV_LOG_WARN, "pvs: %llu pixel resolves of P3 ran out of llvmpipe's loop budget: the PVS may miss "
+               "triangles (docs/journal/2026-12-03-k64.md)", (unsigned long long)st->loop_budget_pixels);
     st->tiles = pvs_tile_count(&ctx->grid);
     st->per_layer = ctx->per_layer;
     uint64_t seq = 0;

@@ -120,6 +120,9 @@ typedef struct pvs_stats {
     uint64_t overflow_pixels;     /* pixel resolves handled by the overflow policy */
     uint64_t overflow_fronts;     /* front fragments that found their k-buffer full */
     uint64_t coop_pixels;         /* pixel resolves whose sequences a workgroup sorted */
+    uint64_t loop_budget_pixels;  /* pixel resolves of P3 that ran out of llvmpipe's loop budget
+                                     (shaders/pvs_common.glsl): their results are unreliable, and
+                                     pvs_compute logs a warning. 0 on other devices */
     uint32_t tiles;               /* tiles the image was computed in (pvs_desc.max_tile_pixels) */
     uint32_t proxies;             /* proxies given to pvs_compute_dynamic */
     uint32_t proxies_output;      /* of those, the ones whose ids joined the result */

@@ -70,6 +70,21 @@ layout(push_constant) uniform pvs_push_block {
     uint kind;
 } pc;
 
+// llvmpipe (lavapipe) counts the back-edges of every loop an invocation of
+// a shader runs (one SIMD group: 8 lanes at 256 bits) against one budget of
+// 65535 (LP_MAX_TGSI_LOOP_ITERATIONS) and, once it is spent, ends every loop
+// after the iteration it is in, silently, and its lanes' results are wrong:
+// P3's validate, cubic in the sequence until regions_build, spent it at long
+// sequences (docs/journal/2026-12-03-k64.md). This loop of view.k + 1 >= 2
+// iterations runs one when the budget is spent; other devices have none.
+bool loop_budget_spent()
+{
+    uint trips = 0u;
+    for (uint j = 0u; j <= view.k; j++)
+        trips++;
+    return trips != view.k + 1u;
+}
+
 #ifdef TV_PVS_WRITES
 // Puts triangle `id` in the PVS. In explain mode (pvs_desc.explain) its flag
 // collects the TV_REASON_* bit of every rule that output it; otherwise a plain

@@ -90,4 +90,6 @@ void main()
         handled = resolve_end(n, m);
     }
     finish_pixel(n, handled);
+    if (loop_budget_spent())
+        atomicAdd(counters[TV_PVS_C_LOOP_BUDGET], 1u);
 }

@@ -3,9 +3,11 @@
 // sort) and pvs_resolve_group.comp (one workgroup per pixel whose sequence
 // is long, bitonic sort). It mirrors pvs_resolve_pixel in pvs/resolve.c
 // function by function (same names, same order, same tie-breaks); the only
-// difference is the runtime capacities view.k, k_exact in place of the TV_K_* bounds, kbuf.k_exact,
-// and that the k-buffers are read through their pages (kb_next) where the C
-// reference has arrays (pvs_kbuf_read).
+// differences: the runtime capacities view.k, k_exact in place of the TV_K_* bounds, kbuf.k_exact,
+// that the k-buffers are read through their pages (kb_next) where the C
+// reference has arrays (pvs_kbuf_read), and that region_meets reads a table
+// of the regions (pvs_resolve_regions.glsl) where resolve.c scans the
+// sequence: llvmpipe's loop budget (pvs_common.glsl) bounds the loops here.
 // Output ids set their flag in tri_flags.
 //
 // The includer defines TV_RESOLVE_STORAGE (empty or `shared`), S2 and
@@ -181,6 +183,8 @@ bool umbra_depth(uint region, inout float depth)
     return true;
 }
 
+#include "pvs_resolve_regions.glsl"
+
 bool stored_face(uint kind, uint depth_bits)
 {
     uvec2 e;
@@ -235,26 +239,6 @@ void form_intervals(uint n)
     }
 }
 
-// resolve.c's region_meets: trim i's region overlaps or straddles [lo, hi],
-// or lo lies on its farther plane; only fragments in front of trims_lost.
-bool region_meets(uint n, uint i, float lo, float hi)
-{
-    float inf = kdepth(0x7F800000u), mn = inf, mx = -inf;
-    uint count = 0u;
-    for (uint j = 0u; j < n; j++)
-        if (ent[j].kind == TV_ENTRY_TRIM && ent[j].id == ent[i].id && ent[j].depth < trims_lost) {
-            mn = min(mn, ent[j].depth);
-            mx = max(mx, ent[j].depth);
-            count++;
-        }
-    if (count == 0u)
-        return false;
-    if (mn <= hi && mx >= lo)
-        return true;
-    float far = count == 2u ? 2.0 * mx - mn : mx;
-    return count > 1u && abs(lo - far) <= 4.0 * TV_PVS_TRIM_NUDGE * far;
-}
-
 bool region_in(uint n, uint id)
 {
     for (uint j = 0u; j < n; j++)
@@ -271,17 +255,16 @@ void validate(uint n)
         iv_valid[v] = lost_here;
         bool cracked = false;
         iv_end[v] = hi;
-        for (uint i = 0u; i < n; i++) {
-            if (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth >= trims_lost)
-                continue; // found room by arrival order (resolve.c)
-            bool crack = ent[i].kind == TV_ENTRY_TRIM && ent[i].id != TV_ID_PRIOR && (ent[i].id & TV_REGION_CRACK) != 0u;
+        for (uint i = 0u; i < n; i++) { // trims behind trims_lost found room by arrival order (resolve.c)
+            bool crack = ent[i].kind == TV_ENTRY_TRIM && ent[i].depth < trims_lost && ent[i].id != TV_ID_PRIOR &&
+                         (ent[i].id & TV_REGION_CRACK) != 0u;
             if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
                 cracked = true;
-            if (lost_here || ent[i].kind != TV_ENTRY_TRIM || !region_meets(n, i, lo, hi))
+        }
+        for (uint r = 0u; !lost_here && r < rg_n; r++) { // resolve.c's fragments, a region at a time
+            if (!region_meets(r, lo, hi))
                 continue;
-            float u = hi;
-            if (!umbra_depth(ent[i].id, u) || u < hi)
-                u = hi;
+            float u = rg_umbra[r] < hi || isinf(rg_umbra[r]) ? hi : rg_umbra[r];
             iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
             iv_valid[v] = true;
         }
@@ -295,13 +278,13 @@ void validate(uint n)
 
 #define LONE_ERODED (-2) // resolve.c
 
-bool lone_eroded(uint n, uint b)
+bool lone_eroded(uint b)
 {
     float d = ent[b].depth;
     if (d >= trims_lost)
         return true;
-    for (uint i = 0u; i < n; i++)
-        if (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth < trims_lost && region_meets(n, i, d, d))
+    for (uint r = 0u; r < rg_n; r++)
+        if (region_meets(r, d, d))
             return true;
     return false;
 }
@@ -316,7 +299,7 @@ uint replace_backs(uint n)
             continue; // resolve.c: a candidate back stays, the walk decides
         ent[S2 + m] = ent[i];
         ent[S2 + m].delta = valid && iv_first[v] == i ? 1 : 0;
-        if (v < 0 && ent[i].kind == TV_ENTRY_BACK && !is_candidate(ent[i]) && lone_eroded(n, i))
+        if (v < 0 && ent[i].kind == TV_ENTRY_BACK && !is_candidate(ent[i]) && lone_eroded(i))
             ent[S2 + m].interval = LONE_ERODED;
         m++;
     }
@@ -490,6 +473,7 @@ uint resolve_intervals(uint n)
 {
     form_intervals(n);
     trims_lost = cnt.z > view.k ? kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_TRIM]) : kdepth(0x7F800000u);
+    regions_build(n);
     validate(n);
     return replace_backs(n);
 }

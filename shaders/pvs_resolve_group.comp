@@ -70,8 +70,11 @@ void main()
             s_m = resolve_intervals(s_n);
         barrier();
         bitonic_sort(S2, s_m);
-        if (lead)
+        if (lead) {
             finish_pixel(s_n, resolve_end(s_n, s_m));
+            if (loop_budget_spent()) // also the later pixels of this group: the budget is the group's
+                atomicAdd(counters[TV_PVS_C_LOOP_BUDGET], 1u);
+        }
         barrier();
     }
 }

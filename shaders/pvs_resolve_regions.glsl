@@ -1,0 +1,57 @@
+// pvs_resolve_regions.glsl - resolve.c's region_meets over a table of the
+// trim sequence's regions, included by pvs_resolve.glsl after umbra_depth.
+// resolve.c scans the whole sequence for a region's fragments at every call,
+// and validate and lone_eroded call it per fragment (with umbra_depth's scan
+// of the umbrae inside): cubic in the sequence, which spent llvmpipe's loop
+// budget (pvs_common.glsl) on long sequences. regions_build gathers once,
+// per region, what region_meets and umbra_depth read (every fragment of a
+// region gives both the same answer), so the tests below cost no loop.
+#ifndef TV_PVS_RESOLVE_REGIONS_GLSL
+#define TV_PVS_RESOLVE_REGIONS_GLSL
+
+#define RG_MAX (TV_K_TRIM + TV_K_CARRY) // the list's trims and the carried ones
+
+uint rg_n;
+uint rg_id[RG_MAX], rg_count[RG_MAX]; // fragments in front of trims_lost
+float rg_mn[RG_MAX], rg_mx[RG_MAX];
+float rg_umbra[RG_MAX]; // umbra_depth's answer, +inf: none
+
+// The regions of the trims of ent[0, n) in front of trims_lost (set first).
+void regions_build(uint n)
+{
+    const float inf = uintBitsToFloat(0x7F800000u);
+    rg_n = 0u;
+    for (uint i = 0u; i < n; i++) {
+        if (ent[i].kind != TV_ENTRY_TRIM || !(ent[i].depth < trims_lost))
+            continue;
+        uint r = 0u;
+        while (r < rg_n && rg_id[r] != ent[i].id)
+            r++;
+        if (r == rg_n) {
+            rg_id[r] = ent[i].id;
+            rg_count[r] = 0u;
+            rg_mn[r] = inf;
+            rg_mx[r] = -inf;
+            rg_n++;
+        }
+        rg_mn[r] = min(rg_mn[r], ent[i].depth);
+        rg_mx[r] = max(rg_mx[r], ent[i].depth);
+        rg_count[r]++;
+    }
+    for (uint r = 0u; r < rg_n; r++) {
+        float u = inf;
+        rg_umbra[r] = umbra_depth(rg_id[r], u) ? u : inf;
+    }
+}
+
+// resolve.c's region_meets for region r of the table: its fragments overlap
+// or straddle [lo, hi], or lo lies on its farther plane.
+bool region_meets(uint r, float lo, float hi)
+{
+    if (rg_mn[r] <= hi && rg_mx[r] >= lo)
+        return true;
+    float far = rg_count[r] == 2u ? 2.0 * rg_mx[r] - rg_mn[r] : rg_mx[r];
+    return rg_count[r] > 1u && abs(lo - far) <= 4.0 * TV_PVS_TRIM_NUDGE * far;
+}
+
+#endif
