@@ -1,15 +1,12 @@
-// pvs_resolve.glsl - P3, the resolve of paper section 4.3, shared by its
-// two variants: pvs_resolve.comp (one invocation per active pixel, insertion
-// sort) and pvs_resolve_group.comp (one workgroup per pixel whose sequence
-// is long, bitonic sort). It mirrors pvs_resolve_pixel in pvs/resolve.c
-// function by function (same names, same order, same tie-breaks); the only
-// difference is the runtime capacities view.k, k_exact in place of the TV_K_* bounds, kbuf.k_exact,
-// and that the k-buffers are read through their pages (kb_next) where the C
-// reference has arrays (pvs_kbuf_read).
+// pvs_resolve.glsl - P3, the resolve of paper section 4.3, shared by its two variants: pvs_resolve.comp
+// (one invocation per active pixel, insertion sort) and pvs_resolve_group.comp (one workgroup per pixel
+// whose sequence is long, bitonic sort). It mirrors pvs_resolve_pixel in pvs/resolve.c function by function
+// (same names, same order, same tie-breaks); the only difference is the runtime capacities view.k, k_exact
+// in place of the TV_K_* bounds, kbuf.k_exact, and that the k-buffers are read through their pages
+// (kb_next) where the C reference has arrays (pvs_kbuf_read).
 // Output ids set their flag in tri_flags.
 //
-// The includer defines TV_RESOLVE_STORAGE (empty or `shared`), S2 and
-// TV_RESOLVE_ENTRIES (the layout of ent[] below).
+// The includer defines TV_RESOLVE_STORAGE (empty or `shared`), S2 and TV_RESOLVE_ENTRIES (ent[]'s layout).
 #ifndef TV_PVS_RESOLVE_GLSL
 #define TV_PVS_RESOLVE_GLSL
 
@@ -160,10 +157,13 @@ void resolve_overflow()
     hide_begin = hide_end = 0.0;
 }
 
+// pvs_kbuf_deep: its umbrae count for nothing (resolve.c says why)
+bool deep_pixel() { return any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))); }
+
 bool umbra_depth(uint region, inout float depth)
 {
-    if (any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))))
-        return false; // a deep pixel (pvs_kbuf_deep): umbrae count for nothing (resolve.c says why)
+    if (deep_pixel())
+        return false;
     const float inf = uintBitsToFloat(0x7F800000u);
     float nearest = inf;
     uvec2 u;
@@ -483,6 +483,8 @@ uint resolve_begin(out bool first)
     if (overflow_due)
         return RESOLVE_OVERFLOW;
     stencil = TV_STENCIL_TRIMMED;
+    if (deep_pixel() && cnt.x > view.k_exact) // resolve.c: the carried range, which umbrae ended
+        hide_begin = hide_end = 0.0;
     return RESOLVE_SEQUENCE;
 }
 
