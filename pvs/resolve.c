@@ -216,18 +216,14 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
     }
 }
 
-/* Whether trim seq[i]'s region meets the depth range [lo, hi] at this pixel.
- * P2 puts a trim quad's fragments at up to three depths: the midpoint of
- * its solid's two planes, at the nearer and (grazing fronts only) at the farther one, those
- * two moved TV_PVS_TRIM_NUDGE towards the other. The solid lies between the
- * planes, so the region meets a range its fragments overlap or straddle (a
- * thin solid's interval can fall between two draws), and a range that
- * starts on its farther plane: a face in that plane (found on oa:oa_dm5;
- * docs/trim-regions.md, "Umbra quad and trim quad") lies behind every
- * draw. With two draws that plane is twice the midpoint less the nearer.
- * When trims were lost, only fragments in front of the nearest lost one
- * count (all of those found room): which ones behind it did depends on
- * arrival order, and the PVS must not. */
+/* Whether trim seq[i]'s region meets the depth range [lo, hi] at this pixel. P2 puts a trim quad's fragments at up
+ * to three depths: the midpoint of its solid's two planes, at the nearer and (grazing fronts only) at the farther
+ * one, those two moved TV_PVS_TRIM_NUDGE towards the other. The solid lies between the planes, so the region meets
+ * a range its fragments overlap or straddle (a thin solid's interval can fall between two draws), and a range that
+ * starts on its farther plane: a face in that plane (found on oa:oa_dm5; docs/trim-regions.md, "Umbra quad and trim
+ * quad") lies behind every draw. With two draws that plane is twice the midpoint less the nearer. When trims were
+ * lost, only fragments in front of the nearest lost one count (all of those found room): which ones behind it did
+ * depends on arrival order, and the PVS must not. */
 static bool region_meets(const seq_entry* seq, uint32_t n, uint32_t i, float lo, float hi, float trims_lost)
 {
     float mn = INFINITY, mx = -INFINITY;
@@ -548,7 +544,10 @@ static uint32_t resolve_layer(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint
     bool first = state->stencil == TV_STENCIL_UNTRIMMED;
     assert(!first || state->carry_count == 0); /* room for the prior faces */
     state->stencil = TV_STENCIL_TRIMMED;
-
+    /* Where k_deep off would take the overflow policy (a front list longer than k), the carried hidden range
+     * counts for nothing, as the umbrae that ended it in earlier layers (umbra_depth; journal/2026-12-03-deepfix) */
+    if (pvs_kbuf_deep(kbuf) && kbuf->front_count > kbuf->k_exact)
+        state->hide_begin = state->hide_end = 0.0f;
     seq_entry seq[SEQ_MAX], seq2[SEQ2_MAX];
     intervals iv;
     uint32_t n = gather(state, kbuf, first, seq);

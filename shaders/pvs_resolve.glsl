@@ -10,8 +10,7 @@
 // sequence: llvmpipe's loop budget (pvs_common.glsl) bounds the loops here.
 // Output ids set their flag in tri_flags.
 //
-// The includer defines TV_RESOLVE_STORAGE (empty or `shared`), S2 and
-// TV_RESOLVE_ENTRIES (the layout of ent[] below).
+// The includer defines TV_RESOLVE_STORAGE (empty or `shared`), S2 and TV_RESOLVE_ENTRIES (ent[]'s layout).
 #ifndef TV_PVS_RESOLVE_GLSL
 #define TV_PVS_RESOLVE_GLSL
 
@@ -162,10 +161,13 @@ void resolve_overflow()
     hide_begin = hide_end = 0.0;
 }
 
+// pvs_kbuf_deep: its umbrae count for nothing (resolve.c says why)
+bool deep_pixel() { return any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))); }
+
 bool umbra_depth(uint region, inout float depth)
 {
-    if (any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))))
-        return false; // a deep pixel (pvs_kbuf_deep): umbrae count for nothing (resolve.c says why)
+    if (deep_pixel())
+        return false;
     const float inf = uintBitsToFloat(0x7F800000u);
     float nearest = inf;
     uvec2 u;
@@ -466,6 +468,8 @@ uint resolve_begin(out bool first)
     if (overflow_due)
         return RESOLVE_OVERFLOW;
     stencil = TV_STENCIL_TRIMMED;
+    if (deep_pixel() && cnt.x > view.k_exact) // resolve.c: the carried range, which umbrae ended
+        hide_begin = hide_end = 0.0;
     return RESOLVE_SEQUENCE;
 }
 

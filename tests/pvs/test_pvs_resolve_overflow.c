@@ -1,7 +1,8 @@
 /* Trim-sequence resolve (P3 reference) when lists overflow: every front is
  * kept, fronts behind the terminator, full umbra, trim and back lists, prior
  * faces, a carry that does not fit, and a k-buffer page pool that runs
- * out, and a deep pixel (more entries than k, fewer than the lists hold). */
+ * out, and a deep pixel (more entries than k, fewer than the lists hold),
+ * which ignores umbrae and the hidden range they carried. */
 #include "resolve_harness.h"
 #include "test.h"
 
@@ -126,6 +127,33 @@ static void test_deep_pixel_without_umbrae(void)
     layer_result r = run_layer(&s, items, TV_K_FRONT + 10);
     TV_CHECK(r.overflowed && s.stencil == TV_STENCIL_SEALED);
     CHECK_OUT(r, 1, 3);
+    harness_k_exact = 0;
+}
+
+/* Sponza's deep pixel (382, 256) (docs/journal/2026-12-03-deepfix.md): a
+ * shallow layer validates [1, 1.5] with region 1's umbra at 10 and carries
+ * the hidden range [1, 10]; a later layer's faces at 4-5 lie in it. At a
+ * shallow pixel they stay hidden (F 20 seals unseen). Where the front list
+ * is longer than k (k_deep off would output every front) that range, which
+ * an umbra ended, counts for nothing as umbrae do: the candidates and the
+ * terminator F 20 are output. A pixel deep by its trims alone keeps it. */
+static void test_deep_pixel_drops_carried_range(void)
+{
+    harness_k_exact = 3;
+    for (uint32_t c = 0; c < 3; c++) { /* shallow, 4 fronts, 4 trims */
+        pvs_pixel_state s = {0};
+        layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(10.0f, 1));
+        CHECK_OUT(r, 1);
+        TV_CHECK(s.stencil == TV_STENCIL_TRIMMED && s.hide_begin == 1.0f && s.hide_end == 10.0f);
+        item later[] = {C(4.0f, 10), C(4.1f, 11), C(4.2f, 12), F(5.0f, 20), B(5.5f),
+                        T(6.0f, 7),  T(6.1f, 8),  T(6.2f, 9),  T(6.3f, 10)};
+        r = c == 1 ? run_layer(&s, later, 5) : run_layer(&s, later + 1, c == 0 ? 4 : 8);
+        TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_SEALED && s.term_depth == 5.0f);
+        if (c == 1)
+            CHECK_OUT(r, 10, 11, 12, 20);
+        else
+            CHECK_NONE(r);
+    }
     harness_k_exact = 0;
 }
 
@@ -323,6 +351,7 @@ int main(void)
     TV_TEST_RUN(test_overflow_behind_terminator);
     TV_TEST_RUN(test_overflow_umbra_list);
     TV_TEST_RUN(test_deep_pixel_without_umbrae);
+    TV_TEST_RUN(test_deep_pixel_drops_carried_range);
     TV_TEST_RUN(test_overflow_trim_list);
     TV_TEST_RUN(test_overflow_back_list);
     TV_TEST_RUN(test_prior_faces);
