@@ -5,6 +5,7 @@
 #include "resolve.h"
 
 #include <assert.h>
+#include <math.h>
 #include <string.h>
 
 /* The counter always advances, as P2's atomic does, so that a value above
@@ -34,20 +35,53 @@ static uint32_t follow(pvs_kpages* pages, uint32_t* link)
 }
 
 /* pvs_store of pvs_kbuffer.glsl: slot `slot` of list `list` through its
- * pages; a slot the pool has no page for marks the counter. */
-static bool store(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t list, uint32_t* counter, uint32_t slot, float depth,
-                  uint32_t id)
+ * pages; false where the pool has no page for it. */
+static bool store_bits(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t list, uint32_t slot, uint32_t e0, uint32_t e1)
 {
     uint32_t page = follow(pages, &kbuf->head[list]);
     for (uint32_t i = slot / TV_PVS_PAGE; i > 0 && page != TV_PVS_NO_PAGE; i--)
         page = follow(pages, &pages->links[page - 1]);
-    if (page == TV_PVS_NO_PAGE) {
-        *counter |= TV_PVS_COUNT_LOST;
+    if (page == TV_PVS_NO_PAGE)
         return false;
-    }
     uint32_t* e = pages->slots[TV_PVS_PAGE * (page - 1) + slot % TV_PVS_PAGE];
-    memcpy(&e[0], &depth, sizeof depth);
-    e[1] = id;
+    e[0] = e0;
+    e[1] = e1;
+    return true;
+}
+
+static uint32_t bits(float depth)
+{
+    uint32_t b;
+    memcpy(&b, &depth, sizeof b);
+    return b;
+}
+
+static float bits_depth(uint32_t b)
+{
+    float d;
+    memcpy(&d, &b, sizeof d);
+    return d;
+}
+
+/* A slot the pool has no page for marks the counter. */
+static bool store(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t list, uint32_t* counter, uint32_t slot, float depth,
+                  uint32_t id)
+{
+    if (store_bits(kbuf, pages, list, slot, bits(depth), id))
+        return true;
+    *counter |= TV_PVS_COUNT_LOST;
+    return false;
+}
+
+/* Entry r's two slots in the region list (TV_PVS_REGION_SLOTS): slot s of
+ * the trim list below K, else slot s - K of the umbra list. */
+static bool store_entry(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t r, const uint32_t e[4])
+{
+    for (uint32_t i = 0; i < TV_PVS_REGION_SLOTS; i++) {
+        uint32_t s = TV_PVS_REGION_SLOTS * r + i;
+        if (!store_bits(kbuf, pages, s < TV_K_TRIM ? 2 : 3, s < TV_K_TRIM ? s : s - TV_K_TRIM, e[2 * i], e[2 * i + 1]))
+            return false;
+    }
     return true;
 }
 
@@ -55,6 +89,50 @@ static void keep_nearest(float* lost, float depth)
 {
     if (*lost == 0.0f || depth < *lost)
         *lost = depth;
+}
+
+/* Claims entry r and stores it; where it finds no room, a claimed entry
+ * marks the counter. */
+static bool push_entry(pvs_kbuf* kbuf, pvs_kpages* pages, const uint32_t e[4])
+{
+    uint32_t r;
+    if (claim(&kbuf->trim_count, TV_K_TRIM, &r) && store_entry(kbuf, pages, r, e)) {
+        memcpy(kbuf->entry_bits[r], e, sizeof kbuf->entry_bits[r]);
+        return true;
+    }
+    if (r < TV_K_TRIM)
+        kbuf->trim_count |= TV_PVS_COUNT_LOST;
+    return false;
+}
+
+bool pvs_kbuf_push_region(pvs_kbuf* kbuf, pvs_kpages* pages, float trim, float second, float umbra, uint32_t id)
+{
+    assert(kbuf && pages);
+    if (trim == 0.0f && second == 0.0f)
+        return false;
+    const uint32_t e[4] = {bits(trim), id, bits(umbra), bits(second)};
+    if (push_entry(kbuf, pages, e))
+        return true;
+    keep_nearest(&kbuf->trim_lost, trim == 0.0f ? second : second == 0.0f ? trim : fminf(trim, second));
+    return false;
+}
+
+/* A trim or umbra pushed alone (pvs_kbuf_push_region says how). */
+static bool push_joined(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth, uint32_t id)
+{
+    uint32_t stored = kbuf->trim_count < TV_K_TRIM ? kbuf->trim_count : TV_K_TRIM;
+    for (uint32_t r = 0; r < stored; r++) {
+        uint32_t* e = kbuf->entry_bits[r];
+        uint32_t free_slot = kind == TV_ENTRY_UMBRA ? 2 : e[0] == 0 ? 0 : 3;
+        if ((e[0] | e[2] | e[3]) != 0 && e[1] == id && e[free_slot] == 0) {
+            e[free_slot] = bits(depth);
+            return store_entry(kbuf, pages, r, e);
+        }
+    }
+    if (kind == TV_ENTRY_TRIM)
+        return pvs_kbuf_push_region(kbuf, pages, depth, 0.0f, 0.0f, id);
+    const uint32_t u[4] = {0, id, bits(depth), 0};
+    return kbuf->trim_count < TV_K_TRIM && push_entry(kbuf, pages, u); /* a full list drops it uncounted */
 }
 
 bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth, uint32_t id)
@@ -76,32 +154,41 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth
             return false;
         return claim(&kbuf->back_count, TV_K_BACK, &s) && store(kbuf, pages, 1, &kbuf->back_count, s, depth, id);
     case TV_ENTRY_TRIM:
-        if (!claim(&kbuf->trim_count, TV_K_TRIM, &s) || !store(kbuf, pages, 2, &kbuf->trim_count, s, depth, id)) {
-            keep_nearest(&kbuf->trim_lost, depth);
-            return false;
-        }
-        return true;
     case TV_ENTRY_UMBRA:
-        return claim(&kbuf->umbra_count, TV_K_UMBRA, &s) && store(kbuf, pages, 3, &kbuf->umbra_count, s, depth, id);
+        return push_joined(kbuf, pages, kind, depth, id);
     default:
         assert(!"pvs_kbuf_push: kind must be FRONT, BACK, TRIM or UMBRA");
         return false;
     }
 }
 
-/* kb_next of pvs_resolve.glsl: the first `slots` slots of a list, holes
- * skipped. */
+/* kb_read of pvs_kread.glsl: the first `slots` slots of a list, holes
+ * included (past a chain cut short, holes). */
+static void read_slots(const pvs_kpages* pages, uint32_t head, uint32_t slots, uint32_t (*out)[2])
+{
+    uint32_t page = head;
+    for (uint32_t s = 0; s < slots; s++) {
+        out[s][0] = TV_PVS_HOLE;
+        out[s][1] = 0;
+        if (page == TV_PVS_NO_PAGE)
+            continue;
+        memcpy(out[s], pages->slots[TV_PVS_PAGE * (page - 1) + s % TV_PVS_PAGE], sizeof out[s]);
+        if ((s + 1) % TV_PVS_PAGE == 0)
+            page = pages->links[page - 1];
+    }
+}
+
+/* kb_next of pvs_kread.glsl: the first min(count, capacity) slots of a
+ * list, holes skipped. */
 static uint32_t read_list(const pvs_kpages* pages, uint32_t head, uint32_t count, uint32_t capacity, float* depth,
                           uint32_t* id)
 {
-    uint32_t n = 0, page = head, slots = count < capacity ? count : capacity;
-    for (uint32_t s = 0; s < slots && page != TV_PVS_NO_PAGE;) {
-        const uint32_t* e = pages->slots[TV_PVS_PAGE * (page - 1) + s % TV_PVS_PAGE];
-        if (++s % TV_PVS_PAGE == 0)
-            page = pages->links[page - 1];
-        if (e[0] != TV_PVS_HOLE) {
-            memcpy(&depth[n], &e[0], sizeof depth[n]);
-            id[n++] = e[1];
+    uint32_t raw[TV_K_FRONT > TV_K_BACK ? TV_K_FRONT : TV_K_BACK][2], n = 0, slots = count < capacity ? count : capacity;
+    read_slots(pages, head, slots, raw);
+    for (uint32_t s = 0; s < slots; s++) {
+        if (raw[s][0] != TV_PVS_HOLE) {
+            depth[n] = bits_depth(raw[s][0]);
+            id[n++] = raw[s][1];
         }
     }
     return n;
@@ -112,9 +199,30 @@ void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages)
     assert(kbuf && pages);
     kbuf->front_held = read_list(pages, kbuf->head[0], kbuf->front_count, TV_K_FRONT, kbuf->front_depth, kbuf->front_tri);
     kbuf->back_held = read_list(pages, kbuf->head[1], kbuf->back_count, TV_K_BACK, kbuf->back_depth, kbuf->back_tri);
-    kbuf->trim_held = read_list(pages, kbuf->head[2], kbuf->trim_count, TV_K_TRIM, kbuf->trim_depth, kbuf->trim_region);
-    kbuf->umbra_held =
-        read_list(pages, kbuf->head[3], kbuf->umbra_count, TV_K_UMBRA, kbuf->umbra_depth, kbuf->umbra_region);
+    kbuf->trim_held = kbuf->umbra_held = 0;
+    uint32_t slots = TV_PVS_REGION_SLOTS * (kbuf->trim_count < TV_K_TRIM ? kbuf->trim_count : TV_K_TRIM);
+    uint32_t raw[2 * TV_K_TRIM][2];
+    read_slots(pages, kbuf->head[2], slots < TV_K_TRIM ? slots : TV_K_TRIM, raw);
+    if (slots > TV_K_TRIM)
+        read_slots(pages, kbuf->head[3], slots - TV_K_TRIM, raw + TV_K_TRIM);
+    for (uint32_t s = 0; s < slots; s += TV_PVS_REGION_SLOTS) {
+        const uint32_t* a = raw[s];
+        const uint32_t* b = raw[s + 1];
+        if (a[0] == TV_PVS_HOLE || b[0] == TV_PVS_HOLE)
+            continue; /* its region was lost */
+        uint32_t region = a[1];
+        const float trims[2] = {bits_depth(a[0]), bits_depth(b[1])};
+        for (uint32_t i = 0; i < 2; i++) {
+            if (trims[i] != 0.0f) {
+                kbuf->trim_depth[kbuf->trim_held] = trims[i];
+                kbuf->trim_region[kbuf->trim_held++] = region;
+            }
+        }
+        if (b[0] != 0) {
+            kbuf->umbra_depth[kbuf->umbra_held] = bits_depth(b[0]);
+            kbuf->umbra_region[kbuf->umbra_held++] = region;
+        }
+    }
 }
 
 bool pvs_kbuf_deep(const pvs_kbuf* k)

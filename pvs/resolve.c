@@ -4,7 +4,7 @@
 #include <math.h>
 
 /* Upper bounds of the per-pixel sequences (thread-local arrays on the GPU). */
-#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
+#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + 2 * TV_K_TRIM) // two trim depths per region entry
 #define IV_MAX (TV_K_BACK + 2 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 2 : TV_K_FRONT + TV_K_CARRY) // + two prior backs
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 

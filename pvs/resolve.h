@@ -8,7 +8,8 @@
  * Contract in short:
  * - Per pixel and layer, four k-buffers (fronts, backs, trims, umbrae) of
  *   TV_K_* entries (shaders/pvs_shared.h) whose counters run past K: a count
- *   above K means the list overflowed. P2 stores them in pages of a pool
+ *   above K means the list overflowed. The trim and umbra lists hold one list
+ *   of region entries (TV_PVS_REGION_SLOTS), trims and umbrae together. P2 stores them in pages of a pool
  *   (pvs_kpages, as the GPU does); an entry the pool has no page for is lost
  *   like one past K, and its list reads as overflowed. Trims and umbrae carry their
  *   trim-region id, unique within one PVS computation, which pairs them.
@@ -61,10 +62,16 @@ typedef struct pvs_kbuf {
     uint32_t front_tri[TV_K_FRONT];
     float back_depth[TV_K_BACK];
     uint32_t back_tri[TV_K_BACK];
-    float trim_depth[TV_K_TRIM];
-    uint32_t trim_region[TV_K_TRIM];
+    /* Trims and umbrae come in region entries (TV_PVS_REGION_SLOTS): up to
+     * two trim depths and an umbra each, trim_count of them; umbra_count stays 0. */
+    float trim_depth[2 * TV_K_TRIM];
+    uint32_t trim_region[2 * TV_K_TRIM];
     float umbra_depth[TV_K_UMBRA];
     uint32_t umbra_region[TV_K_UMBRA];
+    /* The region entries as stored (trim, region id, umbra, second trim
+     * bits; a region id of 0 with no depth: none), which pvs_kbuf_push's
+     * trims and umbrae join. */
+    uint32_t entry_bits[TV_K_TRIM][4];
     /* Nearest depth of the front / back faces covering the pixel centre over
      * this and every earlier layer (P2's exact pass; 0 or INFINITY: none).
      * Read only when the pixel becomes trimmed (TV_ID_PRIOR). */
@@ -108,6 +115,16 @@ typedef struct pvs_pixel_state {
  * for a front the caller must then keep `id` and ask pvs_spill_output after
  * the resolve. Asserts a valid kind. */
 bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth, uint32_t id);
+
+/* P2's push of one trim region's fragment (pvs_push_region of
+ * pvs_kbuffer.glsl): one entry of two trim depths and the umbra's depth (0:
+ * none), nothing where both trim depths are 0. Where it finds no
+ * room, the nearer trim depth is kept as the lost trim's. A trim or umbra
+ * pushed by pvs_kbuf_push joins the first stored entry of its region that
+ * has room for it, else starts one (the tests build sequences fragment by
+ * fragment; an umbra alone is an entry without trim depth, dropped
+ * uncounted where the list is full: the GPU stores no umbra without trims). */
+bool pvs_kbuf_push_region(pvs_kbuf* kbuf, pvs_kpages* pages, float trim, float second, float umbra, uint32_t id);
 
 /* A deep pixel: k_exact set, a list longer than it, none past its capacity
  * (docs/trim-regions.md, "Overflow policy"). */

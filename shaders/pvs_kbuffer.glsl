@@ -94,11 +94,12 @@ bool pvs_store(uint p, uint list, uint slot, uvec2 e)
 // caller handles a lost front; the lost depths make both conservative).
 // Only pixels P3 has work for become active: a still untrimmed pixel
 // without trim fragments resolves to nothing (pvs_resolve_pixel's early
-// return), so faces and umbrae activate it only once it is trimmed; the
-// counters of every pixel are cleared before each layer instead.
+// return), so faces activate it only once it is trimmed (trims always,
+// pvs_push_region); the counters of every pixel are cleared before each
+// layer instead.
 bool pvs_push(uint p, uint kind, float depth, uint id)
 {
-    if (kind == TV_PVS_KIND_TRIM || pixstate[p].x != TV_STENCIL_UNTRIMMED)
+    if (pixstate[p].x != TV_STENCIL_UNTRIMMED)
         pvs_mark_active(p);
     uint d = floatBitsToUint(depth);
     uvec2 e = uvec2(d, id);
@@ -113,17 +114,36 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
             return false; // pvs_kbuf_push: half the list stays for real backs
         uint slot = atomicAdd(pixcount[p].y, 1u);
         return slot < view.k && pvs_store(p, 1u, slot, e);
-    } else if (kind == TV_PVS_KIND_TRIM) {
-        uint slot = atomicAdd(pixcount[p].z, 1u);
-        if (slot >= view.k || !pvs_store(p, 2u, slot, e)) {
-            atomicMin(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_TRIM], d);
-            return false;
-        }
-    } else {
-        uint slot = atomicAdd(pixcount[p].w, 1u);
-        return slot < view.k && pvs_store(p, 3u, slot, e);
     }
     return true;
+}
+
+// Slot s of the pixel's region list (TV_PVS_REGION_SLOTS in pvs_shared.h).
+bool pvs_store_region(uint p, uint s, uvec2 e)
+{
+    return s < view.k ? pvs_store(p, 2u, s, e) : pvs_store(p, 3u, s - view.k, e);
+}
+
+// One trim region's fragment (pvs_kbuf_push_region of pvs/kbuffer.c): two
+// trim depths and the umbra's (0: none) in one entry, so that a list of k
+// entries holds k regions where three trim entries each held k / 3. An
+// entry without a trim depth is not stored: its umbra pairs with no trim.
+// Where it finds no room, its nearer trim depth is the lost trim's.
+bool pvs_push_region(uint p, float trim, float second, float umbra, uint id)
+{
+    if (trim == 0.0 && second == 0.0)
+        return false;
+    pvs_mark_active(p);
+    uint r = atomicAdd(pixcount[p].z, 1u);
+    uvec2 a = uvec2(floatBitsToUint(trim), id), b = uvec2(floatBitsToUint(umbra), floatBitsToUint(second));
+    if (r < view.k && pvs_store_region(p, TV_PVS_REGION_SLOTS * r, a) &&
+        pvs_store_region(p, TV_PVS_REGION_SLOTS * r + 1u, b))
+        return true;
+    if (r < view.k) // the umbra list's chain too: the counter of the entries reads as lost
+        atomicOr(pixcount[p].z, TV_PVS_COUNT_LOST);
+    float nearest = trim == 0.0 ? second : second == 0.0 ? trim : min(trim, second);
+    atomicMin(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_TRIM], floatBitsToUint(nearest));
+    return false;
 }
 
 #endif

@@ -1,7 +1,7 @@
 #version 460
-// P2, trim-region and umbra quads into their k-buffers (depth + region id):
-// each fragment of the one quad (pvs_quad.vert) pushes one trim entry per
-// trim depth and the umbra entry.
+// P2, trim-region and umbra quads into the pixel's region list: each
+// fragment of the one quad (pvs_quad.vert) pushes its trim depths and its
+// umbra's as one entry (the farther plane's in a second).
 #extension GL_GOOGLE_include_directive : require
 #include "pvs_kbuffer.glsl"
 
@@ -10,12 +10,11 @@ layout(location = 1) in vec3 v_w_over; // pvs_quad.vert
 
 layout(location = 0) out uint o_unused; // colour writes are masked off
 
-// Within the raster's depth range only, as when each trim depth had its own
-// draw, clipped by the near and far planes.
-void push_trim(uint p, float depth)
+// Within the raster's depth range only (else 0, none), as when each trim
+// depth had its own draw, clipped by the near and far planes.
+float clipped(float depth)
 {
-    if (depth >= view.near_dist && depth <= view.far_dist * TV_PVS_RASTER_FAR_SCALE)
-        pvs_push(p, TV_PVS_KIND_TRIM, depth, v_region);
+    return depth >= view.near_dist && depth <= view.far_dist * TV_PVS_RASTER_FAR_SCALE ? depth : 0.0;
 }
 
 void main()
@@ -24,9 +23,9 @@ void main()
     uint p = pvs_pixel();
     if (pvs_sealed(p))
         return;
-    float depth = pvs_depth();
-    push_trim(p, depth);              // the midpoint
-    push_trim(p, depth / v_w_over.x); // the nearer plane
-    push_trim(p, depth / v_w_over.y); // the farther plane
-    pvs_push(p, TV_PVS_KIND_UMBRA, depth / v_w_over.z, v_region);
+    float depth = pvs_depth(), umbra = depth / v_w_over.z;
+    // the midpoint, the nearer plane and the umbra in one entry; the farther
+    // plane (grazing fronts only) in a second, without umbra
+    pvs_push_region(p, clipped(depth), clipped(depth / v_w_over.x), umbra, v_region);
+    pvs_push_region(p, clipped(depth / v_w_over.y), 0.0, 0.0, v_region);
 }

@@ -16,7 +16,7 @@
 
 #include "pvs_common.glsl"
 
-#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + TV_K_TRIM)
+#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + 2 * TV_K_TRIM) // two trim depths per region entry
 #define IV_MAX (TV_K_BACK + 2 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 2 : TV_K_FRONT + TV_K_CARRY) // + two prior backs
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
@@ -118,30 +118,7 @@ bool is_straddled(seq_entry e)
 
 float kdepth(uint bits) { return uintBitsToFloat(bits); }
 
-// A walk over list `list` of the pixel (TV_PVS_LISTS order) through its
-// pages: its first min(count, k) slots, skipping holes (entries the pool
-// had no page for; their chain may also end early).
-struct kb_cursor {
-    uint page, slot, end;
-};
-
-kb_cursor kb_open(uint list)
-{
-    return kb_cursor(KB_PAGED ? kheads[TV_PVS_LISTS * P + list] : kb_flat_page(P, list), 0u, min(cnt[list], view.k));
-}
-
-bool kb_next(inout kb_cursor c, out uvec2 e)
-{
-    e = uvec2(0u);
-    while (c.slot < c.end && c.page != TV_PVS_NO_PAGE) {
-        e = kpool[TV_PVS_PAGE * (c.page - 1u) + c.slot % TV_PVS_PAGE];
-        if (++c.slot % TV_PVS_PAGE == 0u)
-            c.page = KB_PAGED ? klinks[c.page - 1u] : c.page + 1u;
-        if (e.x != TV_PVS_HOLE)
-            return true;
-    }
-    return false;
-}
+#include "pvs_kread.glsl"
 
 // The overflow policy: every front this pixel knows of is output and the
 // pixel can no longer be sealed.
@@ -170,10 +147,10 @@ bool umbra_depth(uint region, inout float depth)
         return false;
     const float inf = uintBitsToFloat(0x7F800000u);
     float nearest = inf;
-    uvec2 u;
-    for (kb_cursor c = kb_open(3u); kb_next(c, u);) {
-        if (u.y == region)
-            nearest = min(nearest, kdepth(u.x));
+    uvec2 a, b;
+    for (kb_regions c = kb_open_regions(); kb_next_region(c, a, b);) {
+        if (a.y == region && b.x != 0u)
+            nearest = min(nearest, kdepth(b.x));
     }
     for (uint i = 0u; i < carry_count; i++) {
         if (carry[i].kind == TV_ENTRY_UMBRA && carry[i].id == region)
@@ -214,11 +191,16 @@ uint gather(bool first)
     for (uint i = 0u; i < carry_count; i++)
         if (carry[i].kind != TV_ENTRY_UMBRA)
             ent[n++] = make_entry(carry[i].depth, carry[i].kind, carry[i].id, 0);
-    const uint kinds[3] = uint[3](TV_ENTRY_FRONT, TV_ENTRY_BACK, TV_ENTRY_TRIM); // lists 0, 1, 2
-    uvec2 e;
-    for (uint l = 0u; l < 3u; l++)
+    uvec2 e, b;
+    for (uint l = 0u; l < 2u; l++)
         for (kb_cursor c = kb_open(l); kb_next(c, e);)
-            ent[n++] = make_entry(kdepth(e.x), kinds[l], e.y, 0);
+            ent[n++] = make_entry(kdepth(e.x), l == 0u ? TV_ENTRY_FRONT : TV_ENTRY_BACK, e.y, 0);
+    for (kb_regions c = kb_open_regions(); kb_next_region(c, e, b);) {
+        if (e.x != 0u) // pvs_kbuf_read: an entry's trim depths, each a trim of its region
+            ent[n++] = make_entry(kdepth(e.x), TV_ENTRY_TRIM, e.y, 0);
+        if (b.y != 0u)
+            ent[n++] = make_entry(kdepth(b.y), TV_ENTRY_TRIM, e.y, 0);
+    }
     return n;
 }
 
@@ -574,7 +556,7 @@ void finish_pixel(uint seq_len, bool handled)
         carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
     if (!KB_PAGED) { // the bytes read: FLAT's kbuffer_bytes_used (PAGED counts the pages taken)
         uvec4 stored = min(cnt, uvec4(view.k));
-        atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, 8u * (stored.x + stored.y + stored.z + stored.w));
+        atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, 8u * (stored.x + stored.y + TV_PVS_REGION_SLOTS * stored.z));
     }
     atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].y, 1u);
     atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].z, seq_len);

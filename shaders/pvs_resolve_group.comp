@@ -9,7 +9,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 // Powers of two that hold SEQ_MAX and SEQ2_MAX.
-#define SEQ_PAD 128u
+#define SEQ_PAD 256u
 #define SEQ2_PAD 256u
 #define TV_RESOLVE_STORAGE shared
 #define S2 SEQ_PAD

@@ -31,6 +31,13 @@
  * the counter then reads as over k (overflowed), and the entry is lost as one
  * past k is. */
 #define TV_PVS_COUNT_LOST 0x80000000u
+/* A trim region's fragment is one entry of two slots in the pixel's region
+ * list, the trim and umbra lists read as one list of 2k slots (slot s < k in
+ * the trim list, else slot s - k in the umbra list): (trim depth, region id)
+ * and (umbra depth, second trim depth), 0 for a depth it lacks. The trim
+ * list's counter claims entries, k of them; the umbra list has no counter of
+ * its own (docs/pvs-gpu-passes.md, "Passes"). */
+#define TV_PVS_REGION_SLOTS 2u
 /* Specialisation constant of P2's fragment shaders and P3 (pvs_common.glsl,
  * KB_PAGED): 1 for pvs_desc.kbuffer_layout PAGED, 0 for FLAT. */
 #define TV_PVS_SPEC_KB_PAGED 1

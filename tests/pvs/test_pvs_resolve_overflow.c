@@ -80,8 +80,10 @@ static void test_overflow_behind_terminator(void)
     TV_CHECK(t.stencil == TV_STENCIL_TRIMMED);
 }
 
-/* A lost umbra only shortens a hidden range to its back: the pixel is
- * resolved as usual (not the all-fronts policy), and reported. */
+/* An umbra is stored in its region's entry (TV_PVS_REGION_SLOTS), so it no
+ * longer overflows a list of its own: region 0's umbra joins its trim's
+ * entry, and umbrae of regions without a trim here (which the GPU does not
+ * store) are dropped once the list is full, without overflowing it. */
 static void test_overflow_umbra_list(void)
 {
     item items[TV_K_UMBRA + 4];
@@ -93,7 +95,7 @@ static void test_overflow_umbra_list(void)
         items[n++] = (item)U(5.0f + (float)i, i);
     pvs_pixel_state s = {0};
     layer_result r = run_layer(&s, items, n);
-    TV_CHECK(r.overflowed);
+    TV_CHECK(!r.overflowed);
     CHECK_OUT(r, 1);
     TV_CHECK(s.stencil == TV_STENCIL_TRIMMED && s.hide_begin == 1.0f && s.hide_end == 5.0f);
     layer_result r2 = RUN(s, F(4.0f, 2), T(4.2f, 9), B(4.5f), F(6.0f, 3), B(6.5f));
@@ -199,8 +201,8 @@ static void test_overflow_trim_list(void)
      * carried. */
     n = 0;
     items[n++] = (item)T(0.5f, 7);
-    items[n++] = (item)T(9.0f, 7);
-    for (uint32_t i = 2; i < TV_K_TRIM; i++)
+    items[n++] = (item)T(9.0f, 7); /* in region 7's entry */
+    for (uint32_t i = 1; i < TV_K_TRIM; i++)
         items[n++] = (item)T(0.2f, 100 + i);
     items[n++] = (item)T(5.0f, 99); /* lost */
     items[n++] = (item)F(1.0f, 1);
@@ -217,6 +219,36 @@ static void test_overflow_trim_list(void)
     CHECK_NONE(r);
     TV_CHECK(open.stencil == TV_STENCIL_TRIMMED && open.carry_count == 2);
     TV_CHECK(open.carry[1].kind == TV_ENTRY_TRIM && open.carry[1].id == TV_ID_PRIOR && open.carry[1].depth == 3.0f);
+}
+
+/* A trim region's fragment is one entry: two trim depths and its umbra
+ * (TV_PVS_REGION_SLOTS; a third depth, the farther plane, in a second).
+ * Eleven regions of three trim depths each (33 trims, 22 entries; more than
+ * the K = 32 trim entries of one trim per entry, which held ten such
+ * regions, five at k = 16) no longer overflow: region 10's farther
+ * trim is not lost, so [F1, B1.5], which its nearer trim meets, hides up to
+ * its umbra at 3, F2 terminates there and F3 is not output. With one trim
+ * per entry the 2.2 trim was lost: [F4, B4.5] reached back to it, counted as
+ * validated, and F3 was output with the pixel left open. */
+static void test_regions_in_one_entry(void)
+{
+    item items[11 * 4 + 6];
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < 10; i++) { /* in front of every face: they meet nothing */
+        items[n++] = (item)T(0.3f, i);
+        items[n++] = (item)T(0.2f, i);
+        items[n++] = (item)T(0.35f, i);
+        items[n++] = (item)U(0.4f, i);
+    }
+    const item rest[] = {T(2.0f, 10), T(1.00001f, 10), T(2.2f, 10), U(3.0f, 10), F(1.0f, 1), B(1.5f),
+                         F(2.5f, 2),  B(2.8f),         F(4.0f, 3),  B(4.5f)};
+    for (uint32_t i = 0; i < sizeof rest / sizeof rest[0]; i++)
+        items[n++] = rest[i];
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    TV_CHECK(!r.overflowed);
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 2.5f);
 }
 
 /* A lost back merges two intervals: [F1, B1.5] (valid, umbra 1.8) and
@@ -353,6 +385,7 @@ int main(void)
     TV_TEST_RUN(test_deep_pixel_without_umbrae);
     TV_TEST_RUN(test_deep_pixel_drops_carried_range);
     TV_TEST_RUN(test_overflow_trim_list);
+    TV_TEST_RUN(test_regions_in_one_entry);
     TV_TEST_RUN(test_overflow_back_list);
     TV_TEST_RUN(test_prior_faces);
     TV_TEST_RUN(test_carry_overflow);
