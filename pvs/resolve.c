@@ -538,7 +538,7 @@ static uint32_t resolve_layer(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint
     if (state->stencil == TV_STENCIL_UNTRIMMED && kbuf->trim_count == 0)
         return 0;
     *overflowed = state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT ||
-                  kbuf->back_count > TV_K_BACK || kbuf->trim_count > TV_K_TRIM || kbuf->umbra_count > TV_K_UMBRA;
+                  kbuf->back_count > TV_K_BACK || kbuf->trim_count > TV_K_TRIM;
     if (state->stencil == TV_STENCIL_OVERFLOW)
         return resolve_overflow(state, kbuf, out);
     bool first = state->stencil == TV_STENCIL_UNTRIMMED;

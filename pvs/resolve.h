@@ -52,7 +52,9 @@ typedef struct pvs_kpages {
  * list heads, and the entries as pvs_kbuf_read gathers them from the pages
  * (what pvs_resolve_pixel reads). */
 typedef struct pvs_kbuf {
-    uint32_t front_count, back_count, trim_count, umbra_count; /* may exceed K; TV_PVS_COUNT_LOST: pages ran out */
+    /* May exceed K; TV_PVS_COUNT_LOST: pages ran out. The region entries
+     * (trim_count) fill the trim list's pages, then the umbra list's. */
+    uint32_t front_count, back_count, trim_count;
     /* pvs_desc.k (0: TV_K_*): a pixel with a longer list is deep, its umbrae count for nothing. */
     uint32_t k_exact;
     uint32_t head[TV_PVS_LISTS]; /* first page + 1 of each list in the pool (0: empty) */
@@ -63,7 +65,7 @@ typedef struct pvs_kbuf {
     float back_depth[TV_K_BACK];
     uint32_t back_tri[TV_K_BACK];
     /* Trims and umbrae come in region entries (TV_PVS_REGION_SLOTS): up to
-     * two trim depths and an umbra each, trim_count of them; umbra_count stays 0. */
+     * two trim depths and an umbra each, trim_count of them. */
     float trim_depth[2 * TV_K_TRIM];
     uint32_t trim_region[2 * TV_K_TRIM];
     float umbra_depth[TV_K_UMBRA];

@@ -78,5 +78,4 @@ bool kb_next_region(inout kb_regions r, out uvec2 a, out uvec2 b)
     return false;
 }
 
-
 #endif

@@ -74,13 +74,14 @@ typedef struct case_data {
     pvs_pixel_state state[PIXELS];
 } case_data;
 
-/* P2's pushes of the random lists of `raw` into `pages`, from `heads` (NULL:
- * empty lists; the entries past K
+/* P2's pushes of the random lists of `raw` (and `umbrae` of its umbrae)
+ * into `pages`, from `heads` (NULL: empty lists; the entries past K
  * are lost as P2 loses them; the lost depths follow), with a pool that has
  * no page, or one, left at one pixel in eight; then one stored slot in
  * sixteen becomes a hole. kb gets the counters, heads and lost depths;
  * pvs_kbuf_read fills its arrays as P3 reads them. */
-static void store_pixel(const pvs_kbuf* raw, pvs_kpages* pages, const uint32_t heads[TV_PVS_LISTS], pvs_kbuf* kb)
+static void store_pixel(const pvs_kbuf* raw, uint32_t umbrae, pvs_kpages* pages, const uint32_t heads[TV_PVS_LISTS],
+                        pvs_kbuf* kb)
 {
     *kb = (pvs_kbuf){.k_exact = K_EXACT, .nearest_front = raw->nearest_front, .nearest_back = raw->nearest_back,
                      .nearest_culled_back = raw->nearest_culled_back, .front_lost = raw->front_lost,
@@ -96,11 +97,12 @@ static void store_pixel(const pvs_kbuf* raw, pvs_kpages* pages, const uint32_t h
         pvs_kbuf_push(kb, pages, TV_ENTRY_BACK, raw->back_depth[i % K], raw->back_tri[i % K]);
     for (uint32_t i = 0; i < raw->trim_count; i++)
         pvs_kbuf_push(kb, pages, TV_ENTRY_TRIM, raw->trim_depth[i % K], raw->trim_region[i % K]);
-    for (uint32_t i = 0; i < raw->umbra_count; i++)
+    for (uint32_t i = 0; i < umbrae; i++)
         pvs_kbuf_push(kb, pages, TV_ENTRY_UMBRA, raw->umbra_depth[i % K], raw->umbra_region[i % K]);
     pages->taken = pages->taken < pages->page_count ? pages->taken : pages->page_count;
     pages->page_count = room;
-    uint32_t* counts[TV_PVS_LISTS] = {&kb->front_count, &kb->back_count, &kb->trim_count, &kb->umbra_count};
+    /* the region list spans the trim and umbra lists' pages, and its counter is the trim list's */
+    uint32_t* counts[TV_PVS_LISTS] = {&kb->front_count, &kb->back_count, &kb->trim_count, &kb->trim_count};
     for (uint32_t l = 0; l < TV_PVS_LISTS; l++) {
         if (kb->head[l] == TV_PVS_NO_PAGE || rnd_u(16) != 0)
             continue;
@@ -110,7 +112,8 @@ static void store_pixel(const pvs_kbuf* raw, pvs_kpages* pages, const uint32_t h
     pvs_kbuf_read(kb, pages);
 }
 
-static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
+/* Returns how many umbrae to push (pvs_kbuf_push joins them to their regions). */
+static uint32_t make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
 {
     memset(kb, 0, sizeof *kb);
     memset(st, 0, sizeof *st);
@@ -120,7 +123,7 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     kb->front_count = rnd_count();
     kb->back_count = rnd_count();
     kb->trim_count = st->stencil == TV_STENCIL_UNTRIMMED && rnd_u(4) == 0 ? 0 : rnd_count();
-    kb->umbra_count = rnd_count();
+    uint32_t umbrae = rnd_count();
     /* a quarter of the pixels see proxy boxes or panes (docs/trim-regions.md,
      * "See-through triangles and proxies"): three fronts in four candidates */
     bool see_through = rnd_u(4) == 0;
@@ -149,13 +152,13 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     if (st->stencil == TV_STENCIL_SEALED) {
         /* P2 stores nothing at a sealed pixel (it outputs the faces
          * pvs_sealed_output admits itself); P3 must keep its state */
-        kb->front_count = kb->back_count = kb->trim_count = kb->umbra_count = 0;
+        kb->front_count = kb->back_count = kb->trim_count = umbrae = 0;
         st->term_depth = rnd_depth();
         st->hide_begin = rnd_u(2) ? rnd_depth() : 0.0f;
         st->hide_end = st->hide_begin > 0.0f ? st->hide_begin + 0.1f : 0.0f;
     }
     if (st->stencil != TV_STENCIL_TRIMMED)
-        return;
+        return umbrae;
     /* a carried run: a front, then fronts, trims and their umbrae, in depth order */
     uint32_t n = rnd_u(6);
     float d = rnd_depth();
@@ -172,6 +175,7 @@ static void make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         st->hide_begin = rnd_depth();
         st->hide_end = st->hide_begin + 0.1f * (float)(1 + rnd_u(3));
     }
+    return umbrae;
 }
 
 static uint32_t fbits(float f)
@@ -217,7 +221,7 @@ static void upload(pvs_context* ctx, const case_data* c)
         const pvs_pixel_state* st = &c->state[p];
         if (ctx->kb_paged) /* flat: no heads */
             memcpy(heads + TV_PVS_LISTS * p, kb->head, sizeof kb->head);
-        uint32_t counts[4] = {kb->front_count, kb->back_count, kb->trim_count, kb->umbra_count};
+        uint32_t counts[4] = {kb->front_count, kb->back_count, kb->trim_count, 0};
         memcpy(cnt + 4 * p, counts, sizeof counts);
         uint32_t state[4] = {st->stencil, st->stencil == TV_STENCIL_SEALED ? fbits(st->term_depth) : st->carry_count,
                              fbits(st->hide_begin), fbits(st->hide_end)};
@@ -354,8 +358,8 @@ static void check(uint32_t coop_sort_min, pvs_kbuffer_layout layout, const char*
         uint32_t lost = 0;
         for (uint32_t p = 0; p < PIXELS; p++) {
             pvs_kbuf raw;
-            make_pixel(p, &raw, &c->state[p]);
-            store_pixel(&raw, &pages, flat ? heads[p] : NULL, &c->kbuf[p]);
+            uint32_t umbrae = make_pixel(p, &raw, &c->state[p]);
+            store_pixel(&raw, umbrae, &pages, flat ? heads[p] : NULL, &c->kbuf[p]);
             lost += (c->kbuf[p].front_count | c->kbuf[p].trim_count) >= TV_PVS_COUNT_LOST;
         }
         TV_CHECK(lost > PIXELS / 32 && pages.taken < ctx->pool_pages && (!flat || pages.taken == 0));
