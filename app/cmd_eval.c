@@ -182,7 +182,6 @@ static int run(const eval_opts* o, const pvs_method_desc* md, tv_app_scene* s, c
         tv_log(TV_LOG_ERROR, "%s", m ? "out of memory" : err);
         status = 1;
     }
-    tv_interrupt_install();
     int done = 0;
     for (; done < n && status == 0 && !tv_interrupted(); done++) {
         if (!tv_eval_cell_run(m, s->ctx, &s->scene, s->gpu, &ed, o->fov, &cells[done], mask, gt, err, sizeof err)) {
@@ -252,6 +251,7 @@ int tv_cmd_eval(int argc, char** argv)
         free(cells);
         return 2;
     }
+    tv_interrupt_install(); /* before the scene load and the method's preprocessing, which can take seconds */
     tv_app_scene s;
     if (!tv_app_scene_open_out(spec, o.out, &s)) {
         free(cells);

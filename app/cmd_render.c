@@ -185,11 +185,11 @@ int tv_cmd_render(int argc, char** argv)
     if (status != 0)
         return status;
     int wanted = frames_wanted(&o, &r.path);
+    tv_interrupt_install(); /* a signal during the scene load stops the run before the first frame */
     if (wanted == 0 || !tv_app_scene_open_out(spec, o.out, &r.s)) {
         pred_path_free(&r.path);
         return wanted == 0 ? 2 : 1;
     }
-    tv_interrupt_install();
     status = run(&r, wanted) ? 0 : 1;
     int sig = tv_interrupted();
     if (status == 0 && sig) {

@@ -282,12 +282,12 @@ int tv_replay_run(const tv_replay_desc* d)
     int status = tv_app_load_path(d->path, d->scene, &st.path, &spec);
     if (status != 0)
         return status;
+    tv_interrupt_install(); /* a signal during the scene load stops the run before the first frame */
     if (!tv_app_scene_open_out(spec, d->out_dir, &st.s)) {
         pred_path_free(&st.path);
         return 1;
     }
     tv_replay_remove_outputs(d->out_dir);
-    tv_interrupt_install();
     bool ok = setup(&st, err, sizeof err) && first_pvs(&st, err, sizeof err);
     uint64_t frames = hmd_display_frame_count(&st.sim);
     if (d->max_frames && d->max_frames < frames)

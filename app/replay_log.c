@@ -267,23 +267,29 @@ bool tv_replay_log_finish(tv_replay_log* log, const char* dir, const tv_replay_m
         fprintf(table, " frames evaluated      %8llu   (of %llu display frames, %llu identical)\n",
                 (unsigned long long)log->rows, (unsigned long long)m->display_frames,
                 (unsigned long long)log->identical);
-        fprintf(table, " PSNR mean / p5 / min  %8.2f / %.2f / %.2f dB\n", sm.psnr_mean, sm.psnr_p5, sm.psnr_min);
-        fprintf(table, " SSIM mean / p5        %8.4f / %.4f\n", sm.ssim_mean, sm.ssim_p5);
-        fprintf(table, " FN pixels mean / max  %8.2f / %.0f\n", sm.fn_mean, sm.fn_max);
+        if (log->rows) { /* an interrupted run may have none: no means to print */
+            fprintf(table, " PSNR mean / p5 / min  %8.2f / %.2f / %.2f dB\n", sm.psnr_mean, sm.psnr_p5, sm.psnr_min);
+            fprintf(table, " SSIM mean / p5        %8.4f / %.4f\n", sm.ssim_mean, sm.ssim_p5);
+            fprintf(table, " FN pixels mean / max  %8.2f / %.0f\n", sm.fn_mean, sm.fn_max);
+        }
         fprintf(table, " viewcell misses       %8llu of %llu display frames (every frame checked)\n",
                 (unsigned long long)log->misses, (unsigned long long)log->coverage_frames);
         fprintf(table, " whole scene drawn     %8llu display frames (%llu whole-scene PVSs, %u probes)\n",
                 (unsigned long long)log->whole_scene_frames, (unsigned long long)log->whole_scene_pvs,
                 m->probe_requests);
-        fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);
-        if (m->dynamic_tris)
-            fprintf(table, " movers: PVS / FN px   %8.2f %% of %u moving triangles (static %.2f %%) / %.2f mean\n",
-                    100.0 * sm.dynamic_fraction, m->dynamic_tris, 100.0 * sm.static_fraction, sm.dynamic_fn);
-        fprintf(table, " delta / PVS FOV       %8.3f m / %.1f deg (means)\n", sm.delta, sm.fov);
+        if (log->rows) {
+            fprintf(table, " PVS size              %8.2f %% of %u triangles\n", 100.0 * sm.pvs_fraction, m->scene_tris);
+            if (m->dynamic_tris)
+                fprintf(table, " movers: PVS / FN px   %8.2f %% of %u moving triangles (static %.2f %%) / %.2f mean\n",
+                        100.0 * sm.dynamic_fraction, m->dynamic_tris, 100.0 * sm.static_fraction, sm.dynamic_fn);
+            fprintf(table, " delta / PVS FOV       %8.3f m / %.1f deg (means)\n", sm.delta, sm.fov);
+        }
         fprintf(table, " PVS compute           %8.1f ms mean over %zu PVSs (%llu over all directions, %llu clamped)\n",
                 sm.pvs_ms, log->pvs_ms.n, (unsigned long long)log->omni_pvs, (unsigned long long)log->clamped_pvs);
-        fprintf(table, " render full / PVS     %8.2f / %.2f ms mean\n", sm.full_ms, sm.pvs_render_ms);
-        fprintf(table, " prediction p99        %8.4f m / %.3f deg\n", sm.pred_pos_p99, sm.pred_rot_p99);
+        if (log->rows) {
+            fprintf(table, " render full / PVS     %8.2f / %.2f ms mean\n", sm.full_ms, sm.pvs_render_ms);
+            fprintf(table, " prediction p99        %8.4f m / %.3f deg\n", sm.pred_pos_p99, sm.pred_rot_p99);
+        }
         fprintf(table, " wall time             %8.1f s\n", m->wall_s);
     }
     fclose(log->csv);

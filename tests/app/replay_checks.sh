@@ -14,6 +14,9 @@
 #       as many frames as frames.csv has complete rows, and no file of the older run left
 #   replay_checks.sh sigint-render DIR SECONDS command...  SIGINT mid-run of trimvr render: non-zero
 #       exit, "interrupted" on stderr, frames.csv rows complete
+#   replay_checks.sh sigterm-load SECONDS command...  SIGTERM once the command's stderr names the
+#       Vulkan device (the scene is loading, nothing computed yet): non-zero exit, "interrupted" on
+#       stderr; for a replay (--out DIR) summary.json marked interrupted with 0 frames
 #   replay_checks.sh pvs-again DIR TRIMVR SCENE pvs-option...  pvs.csv's last single-frustum PVS computed
 #       again by `trimvr pvs` from its row (centre, direction, up, delta, PVS FOV): the same triangle count
 set -u
@@ -65,8 +68,18 @@ wait_rows() {
     done
 }
 
+# waits (at most SECONDS) until FILE holds TEXT
+wait_text() {
+    i=0
+    while [ $i -lt $(($2 * 10)) ] && ! grep -q "$3" "$1" 2>/dev/null; do
+        sleep 0.1
+        i=$((i + 1))
+    done
+}
+
 # run_and_signal DIR SECONDS SIG command...: runs the command in the background, sends it SIG once
-# DIR/frames.csv has a few rows and waits; sets code (exit status) and msg (stderr)
+# DIR/frames.csv has a few rows (DIR empty: once stderr names the Vulkan device) and waits; sets
+# code (exit status) and msg (stderr)
 run_and_signal() {
     dir=$1
     secs=$2
@@ -75,7 +88,7 @@ run_and_signal() {
     shift 3
     "$@" >/dev/null 2>"$err" &
     pid=$!
-    wait_rows "$dir" "$secs"
+    if [ -n "$dir" ]; then wait_rows "$dir" "$secs"; else wait_text "$err" "$secs" "vulkan device"; fi
     kill -"$sig" $pid 2>/dev/null || fail "the run finished before it could be interrupted"
     wait $pid
     code=$?
@@ -187,6 +200,22 @@ sigint-render)
     check_sigint
     check_csv "$dir" 4
     echo "ok: exit $code: $msg"
+    ;;
+sigterm-load)
+    secs=$1
+    shift
+    run_and_signal "" "$secs" TERM "$@"
+    check_sigint
+    for a in "$@"; do
+        [ "${out_next:-}" = 1 ] && out=$a
+        out_next=0
+        [ "$a" = --out ] && out_next=1
+    done
+    if [ "$2" = replay ]; then
+        grep -q '"interrupted": true' "$out/summary.json" || fail "$out/summary.json is not marked \"interrupted\": true"
+        sh "$0" summary "$out" "frames == 0" || exit 1
+    fi
+    echo "ok: exit $code: $(echo "$msg" | grep interrupted)"
     ;;
 *)
     fail "unknown mode $mode"
