@@ -44,7 +44,8 @@ static const field k_fields[] = {
     {"active_pixels", U64, T(active_pixels)}, {"mean_sequence", F64, T(mean_sequence)},
     {"kbuffer_bytes", U64, T(kbuffer_bytes)}, {"kbuffer_bytes_used", U64, T(kbuffer_bytes_used)},
     {"overflow_pixels", U64, T(overflow_pixels)}, {"overflow_fronts", U64, T(overflow_fronts)},
-    {"coop_pixels", U64, T(coop_pixels)}, {"overflow_share", F64, offsetof(tv_bench_cell, c.overflow_share)},
+    {"coop_pixels", U64, T(coop_pixels)},
+    {"loop_budget_pixels", U64, T(loop_budget_pixels)}, {"overflow_share", F64, offsetof(tv_bench_cell, c.overflow_share)},
     {"full_ms_0", F64, offsetof(tv_bench_cell, full_ms[0])},
     {"full_ms_1", F64, offsetof(tv_bench_cell, full_ms[1])}, {"full_ms_2", F64, offsetof(tv_bench_cell, full_ms[2])},
 };

@@ -19,7 +19,8 @@ static const char* const k_cols[] = {
     "p3_ms", "p4_ms", "layers", "active_pixels", "mean_trim_sequence", "kbuffer_alloc_bytes",
     "kbuffer_used_bytes", "overflow_pixels", "views", "fng_fraction_worst_cell", "psnr_worst_cell_db",
     "gt_completeness", "gt_est_tris", "pvs_over_gt_est_tris", "ssim_mean", "ssim_min",
-    "fng_pixels_ci95", "pvs_over_gt_ci95", "worst_cell", "fng_pixels_worst_cell", "overflow_share"};
+    "fng_pixels_ci95", "pvs_over_gt_ci95", "worst_cell", "fng_pixels_worst_cell", "overflow_share",
+    "loop_budget_pixels"};
 enum { COL_COUNT = (int)(sizeof k_cols / sizeof k_cols[0]) };
 
 static double ratio(double a, double b)
@@ -41,7 +42,7 @@ static void row_values(const tv_bench_row* r, double* v)
         (double)tr->kbuffer_bytes_used, (double)tr->overflow_pixels, r->views, r->fng_fraction_worst_cell,
         r->psnr_worst_cell_db, m->gt_completeness, m->gt_est_tris, ratio(m->pvs_tris, m->gt_est_tris), m->ssim_mean,
         m->ssim_min, r->fng_ci95, r->pvs_over_gt_ci95, r->worst_index, r->worst.m.fng_pixels_mean,
-        r->mean.overflow_share};
+        r->mean.overflow_share, (double)tr->loop_budget_pixels};
     memcpy(v, x, sizeof x);
 }
 

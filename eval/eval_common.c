@@ -288,6 +288,7 @@ tv_eval_cell tv_eval_mean(const tv_eval_cell* c, int n)
         if (xt->kbuffer_bytes_used > tr->kbuffer_bytes_used)
             tr->kbuffer_bytes_used = xt->kbuffer_bytes_used;
         tr->overflow_pixels += xt->overflow_pixels;
+        tr->loop_budget_pixels += xt->loop_budget_pixels;
         tr->layers += xt->layers / (uint32_t)n;
         tr->active_pixels += xt->active_pixels / (uint64_t)n;
         active_sum += xt->active_pixels;
@@ -350,6 +351,7 @@ void tv_eval_json_metrics(FILE* f, const tv_eval_cell* c, const char* indent)
     tv_json_num(f, "kbuffer_used_bytes", (double)tr->kbuffer_bytes_used, ", ");
     tv_json_num(f, "overflow_pixels", (double)tr->overflow_pixels, ", ");
     tv_json_num(f, "overflow_share", c->overflow_share, ", ");
+    tv_json_num(f, "loop_budget_pixels", (double)tr->loop_budget_pixels, ", ");
     tv_json_num(f, "layers", tr->layers, ", ");
     tv_json_num(f, "active_pixels", (double)tr->active_pixels, ", ");
     tv_json_num(f, "mean_trim_sequence", tr->mean_sequence, ",\n");

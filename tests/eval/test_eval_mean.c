@@ -28,8 +28,19 @@ static void test_overflow_share(void)
     TV_CHECK(tv_eval_mean(none, 1).overflow_share == 0.0);
 }
 
+/* A pixel out of llvmpipe's loop budget may be resolved wrongly: the bench
+ * reports every one of them, so the mean sums them. */
+static void test_loop_budget_summed(void)
+{
+    tv_eval_cell c[3] = {cell(1000, 0), cell(1000, 0), cell(1000, 0)};
+    c[0].st.tr.loop_budget_pixels = 2;
+    c[2].st.tr.loop_budget_pixels = 5;
+    TV_CHECK(tv_eval_mean(c, 3).st.tr.loop_budget_pixels == 7);
+}
+
 int main(void)
 {
     TV_TEST_RUN(test_overflow_share);
+    TV_TEST_RUN(test_loop_budget_summed);
     return tv_test_finish();
 }
