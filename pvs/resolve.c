@@ -4,7 +4,7 @@
 #include <math.h>
 
 /* Upper bounds of the per-pixel sequences (thread-local arrays on the GPU). */
-#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + 2 * TV_K_TRIM) // two trim depths per region entry
+#define SEQ_MAX (2 * (TV_K_CARRY + TV_K_TRIM) + TV_K_FRONT + TV_K_BACK) // two trim depths per region entry
 #define IV_MAX (TV_K_BACK + 2 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 2 : TV_K_FRONT + TV_K_CARRY) // + two prior backs
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
@@ -124,9 +124,10 @@ static bool umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t re
         if (k->umbra_region[i] == region)
             nearest = fminf(nearest, k->umbra_depth[i]);
     }
+    float u;
     for (uint32_t i = 0; i < s->carry_count; i++) {
-        if (s->carry[i].kind == TV_ENTRY_UMBRA && s->carry[i].id == region)
-            nearest = fminf(nearest, s->carry[i].depth);
+        if (pvs_carry_umbra(&s->carry[i], region, &u))
+            nearest = fminf(nearest, u);
     }
     if (nearest == INFINITY)
         return false;
@@ -167,8 +168,12 @@ static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, bool first, 
             seq[n++] = make_entry(k->nearest_culled_back, TV_ENTRY_BACK, TV_ID_PRIOR_CULLED, 0);
     }
     for (uint32_t i = 0; i < s->carry_count; i++) {
-        if (s->carry[i].kind != TV_ENTRY_UMBRA)
-            seq[n++] = make_entry(s->carry[i].depth, s->carry[i].kind, s->carry[i].id, 0);
+        float trim[2];
+        uint32_t t = pvs_carry_trims(&s->carry[i], trim);
+        if (s->carry[i].kind == TV_ENTRY_FRONT)
+            seq[n++] = make_entry(s->carry[i].depth, TV_ENTRY_FRONT, s->carry[i].id, 0);
+        for (uint32_t j = 0; j < t; j++)
+            seq[n++] = make_entry(trim[j], TV_ENTRY_TRIM, s->carry[i].id, 0);
     }
     for (uint32_t i = 0; i < k->front_held; i++)
         seq[n++] = make_entry(k->front_depth[i], TV_ENTRY_FRONT, k->front_tri[i], 0);
@@ -470,9 +475,9 @@ static void carry_range(pvs_pixel_state* s, const seq_entry* seq, uint32_t n, co
 
 /* Carries the trailing unfinished run: its fronts, the trims behind its
  * first front (they may validate it once its back arrives) and those trims'
- * umbrae; when trims were lost, also a trim without umbra (region
- * TV_ID_PRIOR) at its first front, standing in for them. Returns false when
- * that does not fit in TV_K_CARRY. */
+ * umbrae, packed (pvs_carry_add); when trims were lost, also a trim without
+ * umbra (region TV_ID_PRIOR) at its first front, standing in for them.
+ * Returns false when that does not fit in TV_K_CARRY. */
 static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* seq, uint32_t n,
                       const intervals* iv)
 {
@@ -483,32 +488,26 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
         /* trims behind the nearest lost one: the stand-in below covers them */
         if (is_candidate_back(&seq[i]) || (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth >= iv->trims_lost))
             continue;
-        if (c == TV_K_CARRY)
-            return false;
-        next[c] = (pvs_entry){seq[i].depth, seq[i].kind, seq[i].id};
         /* A region with fragments in front of the run's first front too
          * meets any interval the run will form (region_meets): carried at
          * that front, as those fragments are not. */
-        if (seq[i].kind == TV_ENTRY_TRIM && region_in(seq, run, seq[i].id))
-            next[c].depth = seq[run].depth;
-        c++;
+        bool moved = seq[i].kind == TV_ENTRY_TRIM && region_in(seq, run, seq[i].id);
+        if (!pvs_carry_add(next, &c, seq[i].kind, moved ? seq[run].depth : seq[i].depth, seq[i].id))
+            return false;
     }
     /* The stand-in for lost trims, at the run's first front: a lost trim,
      * or a lost fragment of a region with one in front of the run, may
      * validate the run once its back arrives. */
-    if (iv->run >= 0 && iv->trims_lost < INFINITY) {
-        if (c == TV_K_CARRY)
-            return false;
-        next[c++] = (pvs_entry){seq[run].depth, TV_ENTRY_TRIM, TV_ID_PRIOR};
-    }
+    if (iv->run >= 0 && iv->trims_lost < INFINITY && !pvs_carry_add(next, &c, TV_ENTRY_TRIM, seq[run].depth, TV_ID_PRIOR))
+        return false;
     uint32_t run_entries = c;
     for (uint32_t i = 0; i < run_entries; i++) {
         float u;
-        if (next[i].kind != TV_ENTRY_TRIM || !umbra_depth(s, k, next[i].id, &u))
-            continue;
-        if (c == TV_K_CARRY)
+        bool first = (next[i].kind & TV_CARRY_KIND) == TV_ENTRY_TRIM; /* the region's first entry */
+        for (uint32_t j = 0; first && j < i; j++)
+            first = next[j].id != next[i].id || (next[j].kind & TV_CARRY_KIND) != TV_ENTRY_TRIM;
+        if (first && umbra_depth(s, k, next[i].id, &u) && !pvs_carry_add(next, &c, TV_ENTRY_UMBRA, u, next[i].id))
             return false;
-        next[c++] = (pvs_entry){u, TV_ENTRY_UMBRA, next[i].id};
     }
     for (uint32_t i = 0; i < c; i++)
         s->carry[i] = next[i];

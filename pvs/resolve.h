@@ -91,12 +91,13 @@ typedef struct pvs_kbuf {
     float trim_lost;
 } pvs_kbuf;
 
-/* One trim-sequence entry. id: triangle id for fronts and backs, trim-region
- * id for trims and umbrae. */
+/* One carried entry (pvs_pixel_state). id: triangle id for fronts, trim-region
+ * id for trims and umbrae; a region's trims and umbra share entries (pvs_carry_add). */
 typedef struct pvs_entry {
     float depth;
-    uint32_t kind; /* TV_ENTRY_* */
+    uint32_t kind; /* TV_ENTRY_*, a trim's with TV_CARRY_* flags */
     uint32_t id;
+    float second;  /* the second depth of TV_CARRY_TRIM2 or TV_CARRY_UMBRA, else 0 */
 } pvs_entry;
 
 typedef struct pvs_pixel_state {
@@ -175,6 +176,18 @@ bool pvs_spill_output(const pvs_pixel_state* state, uint32_t id, float depth);
  * drawn four layers later, which eyes in the viewcell see). Asserts that
  * the pixel is sealed. */
 bool pvs_sealed_output(const pvs_pixel_state* state, float depth);
+
+/* Adds an entry of `kind` to carry[0, *count): a trim of region `id` or its
+ * umbra (TV_ENTRY_UMBRA) goes into the region's last entry where that has
+ * room (two trims, or trims and the umbra), anything else into a new entry.
+ * False when the TV_K_CARRY entries are full. */
+bool pvs_carry_add(pvs_entry* carry, uint32_t* count, uint32_t kind, float depth, uint32_t id);
+
+/* The trim depths a carried entry holds (0 to 2) into depth[]. */
+uint32_t pvs_carry_trims(const pvs_entry* e, float depth[2]);
+
+/* Whether carried entry e holds region `id`'s umbra, and its depth. */
+bool pvs_carry_umbra(const pvs_entry* e, uint32_t id, float* depth);
 
 #ifdef __cplusplus
 }

@@ -43,7 +43,7 @@ void main()
     // the edge lies behind its first front (a slot under a lifted wall).
     bool validated = false;
     for (uint c = 0u; st.x != TV_STENCIL_SEALED && c < st.y; c++)
-        validated = validated || carry_buf[p * TV_K_CARRY + c].y == TV_ENTRY_TRIM;
+        validated = validated || (carry_buf[p * TV_K_CARRY + c].y & TV_CARRY_KIND) == TV_ENTRY_TRIM;
     for (uint c = 0u; st.x != TV_STENCIL_SEALED && c < st.y; c++) {
         uvec4 e = carry_buf[p * TV_K_CARRY + c];
         float depth = uintBitsToFloat(e.x);

@@ -16,7 +16,7 @@
 
 #include "pvs_common.glsl"
 
-#define SEQ_MAX (TV_K_CARRY + TV_K_FRONT + TV_K_BACK + 2 * TV_K_TRIM) // two trim depths per region entry
+#define SEQ_MAX (2 * (TV_K_CARRY + TV_K_TRIM) + TV_K_FRONT + TV_K_BACK) // two trim depths per region entry
 #define IV_MAX (TV_K_BACK + 2 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 2 : TV_K_FRONT + TV_K_CARRY) // + two prior backs
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
@@ -28,12 +28,14 @@ struct seq_entry {
     int delta;
 };
 
+#include "pvs_carry.glsl"
+
 // The pixel: state, counters.
 uint P;
 uvec4 cnt;
 uint stencil, carry_count;
 float hide_begin, hide_end;
-seq_entry carry[TV_K_CARRY]; // only depth, kind, id used
+carry_entry carry[TV_K_CARRY];
 
 // The trim sequence at ent[0, n), the re-sorted one at ent[S2, S2 + m):
 // private to the invocation in pvs_resolve.comp, shared by the workgroup in
@@ -153,8 +155,9 @@ bool umbra_depth(uint region, inout float depth)
             nearest = min(nearest, kdepth(b.x));
     }
     for (uint i = 0u; i < carry_count; i++) {
-        if (carry[i].kind == TV_ENTRY_UMBRA && carry[i].id == region)
-            nearest = min(nearest, carry[i].depth);
+        float u = inf;
+        if (carry_umbra(carry[i], region, u))
+            nearest = min(nearest, u);
     }
     if (nearest == inf)
         return false;
@@ -188,9 +191,16 @@ uint gather(bool first)
         if (cb < inf && !stored_face(TV_ENTRY_BACK, cb))
             ent[n++] = make_entry(kdepth(cb), TV_ENTRY_BACK, TV_ID_PRIOR_CULLED, 0);
     }
-    for (uint i = 0u; i < carry_count; i++)
-        if (carry[i].kind != TV_ENTRY_UMBRA)
-            ent[n++] = make_entry(carry[i].depth, carry[i].kind, carry[i].id, 0);
+    for (uint i = 0u; i < carry_count; i++) {
+        float t0, t1;
+        uint t = carry_trims(carry[i], t0, t1);
+        if (carry[i].kind == TV_ENTRY_FRONT)
+            ent[n++] = make_entry(carry[i].depth, TV_ENTRY_FRONT, carry[i].id, 0);
+        if (t > 0u)
+            ent[n++] = make_entry(t0, TV_ENTRY_TRIM, carry[i].id, 0);
+        if (t > 1u)
+            ent[n++] = make_entry(t1, TV_ENTRY_TRIM, carry[i].id, 0);
+    }
     uvec2 e, b;
     for (uint l = 0u; l < 2u; l++)
         for (kb_cursor c = kb_open(l); kb_next(c, e);)
@@ -397,36 +407,30 @@ void carry_range(uint n)
 
 bool carry_run(uint n)
 {
-    seq_entry next[TV_K_CARRY];
-    uint c = 0u;
+    carry_next_count = 0u;
     uint run = iv_run < 0 ? n : uint(iv_run);
     for (uint i = run; i < n; i++) {
         if (is_candidate_back(ent[i]) || (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth >= trims_lost))
             continue;
-        if (c == TV_K_CARRY)
+        // resolve.c: its fragments in front of the run are not carried
+        bool moved = ent[i].kind == TV_ENTRY_TRIM && region_in(run, ent[i].id);
+        if (!carry_add(ent[i].kind, moved ? ent[run].depth : ent[i].depth, ent[i].id))
             return false;
-        next[c] = ent[i];
-        if (ent[i].kind == TV_ENTRY_TRIM && region_in(run, ent[i].id))
-            next[c].depth = ent[run].depth; // resolve.c: its fragments in front of the run are not carried
-        c++;
     }
-    if (iv_run >= 0 && trims_lost < kdepth(0x7F800000u)) { // resolve.c's stand-in for lost trims
-        if (c == TV_K_CARRY)
-            return false;
-        next[c++] = make_entry(ent[run].depth, TV_ENTRY_TRIM, TV_ID_PRIOR, 0);
-    }
-    uint run_entries = c;
+    if (iv_run >= 0 && trims_lost < kdepth(0x7F800000u) && !carry_add(TV_ENTRY_TRIM, ent[run].depth, TV_ID_PRIOR))
+        return false; // resolve.c's stand-in for lost trims
+    uint run_entries = carry_next_count;
     for (uint i = 0u; i < run_entries; i++) {
         float u = 0.0;
-        if (next[i].kind != TV_ENTRY_TRIM || !umbra_depth(next[i].id, u))
-            continue;
-        if (c == TV_K_CARRY)
+        bool first = (carry_next[i].kind & TV_CARRY_KIND) == TV_ENTRY_TRIM; // the region's first entry
+        for (uint j = 0u; first && j < i; j++)
+            first = carry_next[j].id != carry_next[i].id || (carry_next[j].kind & TV_CARRY_KIND) != TV_ENTRY_TRIM;
+        if (first && umbra_depth(carry_next[i].id, u) && !carry_add(TV_ENTRY_UMBRA, u, carry_next[i].id))
             return false;
-        next[c++] = make_entry(u, TV_ENTRY_UMBRA, next[i].id, 0);
     }
-    for (uint i = 0u; i < c; i++)
-        carry[i] = next[i];
-    carry_count = c;
+    for (uint i = 0u; i < carry_next_count; i++)
+        carry[i] = carry_next[i];
+    carry_count = carry_next_count;
     return true;
 }
 
@@ -533,7 +537,7 @@ void load_pixel(uint pixel)
     hide_end = uintBitsToFloat(st.w);
     for (uint c = 0u; c < carry_count; c++) {
         uvec4 e = carry_buf[P * TV_K_CARRY + c];
-        carry[c] = make_entry(uintBitsToFloat(e.x), e.y, e.z, 0);
+        carry[c] = carry_entry(uintBitsToFloat(e.x), e.y, e.z, uintBitsToFloat(e.w));
     }
     n_out = 0u;
     out_reason = TV_REASON_FRONT;
@@ -553,7 +557,8 @@ void finish_pixel(uint seq_len, bool handled)
     pixstate[P] = uvec4(stencil, stencil == TV_STENCIL_SEALED ? floatBitsToUint(term_depth) : carry_count,
                         floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
     for (uint c = 0u; c < carry_count; c++)
-        carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id, 0u);
+        carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id,
+                                              floatBitsToUint(carry[c].second));
     if (!KB_PAGED) { // the bytes read: FLAT's kbuffer_bytes_used (PAGED counts the pages taken)
         uvec4 stored = min(cnt, uvec4(view.k));
         atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, 8u * (stored.x + stored.y + TV_PVS_REGION_SLOTS * stored.z));

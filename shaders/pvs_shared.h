@@ -19,6 +19,14 @@
 #define TV_K_TRIM  32
 #define TV_K_UMBRA 32
 #define TV_K_CARRY 16 /* entries one pixel carries from a layer to the next */
+/* A carried trim region (kind TV_ENTRY_TRIM) packs its trims and umbra into
+ * as few carry entries as hold them: flags above TV_CARRY_KIND in the kind
+ * word say what else an entry holds besides its trim depth; the fourth word
+ * (TV_PVS_BIND_CARRY) is that depth. At most two trims an entry. */
+#define TV_CARRY_KIND  0xFFu  /* the TV_ENTRY_* of a carried entry's kind word */
+#define TV_CARRY_TWICE 0x100u /* its depth is two trims of the region (moved to the run's first front) */
+#define TV_CARRY_TRIM2 0x200u /* the fourth word is a second trim depth */
+#define TV_CARRY_UMBRA 0x400u /* the fourth word is the region's umbra depth */
 /* The four lists of every pixel live in one pool of pages per tile, taken as
  * P2 fills them (docs/trim-regions.md, "k-buffer layout"): a list is a chain
  * of pages of TV_PVS_PAGE entries from its head. Heads and links hold
@@ -227,7 +235,7 @@
 #define TV_PVS_A_LAYERS 1u // slot of tile 0's layer 0 in TV_PVS_BIND_KALLOC
 #define TV_PVS_BIND_PIXCOUNT   11 // uvec4 per pixel: front, back, trim, umbra counters
 #define TV_PVS_BIND_PIXSTATE   12 // uvec4 per pixel: stencil, carry count (sealed: terminator depth bits), hide begin/end bits
-#define TV_PVS_BIND_CARRY      13 // uvec4 (depth bits, kind, id, 0) x TV_K_CARRY per pixel
+#define TV_PVS_BIND_CARRY      13 // uvec4 (depth bits, kind | TV_CARRY_* flags, id, second depth bits) x TV_K_CARRY per pixel
 #define TV_PVS_BIND_ACTIVE     14 // uint per pixel: active pixel stencil
 #define TV_PVS_BIND_ACTIVE_LIST 15 // pixel indices activated in this layer
 #define TV_PVS_BIND_TRI_FLAGS  16 // uint per triangle: 1 = in the PVS

@@ -2,7 +2,7 @@
  * pixel by pixel. White-box: it reaches into the context (gpu_internal.h)
  * to fill the k-buffers and pixel states of a 64x64 PVS with random
  * sequences (depths from a few values, so ties of every kind occur;
- * overflowing lists; carried runs and hidden ranges; prior faces; sealed
+ * overflowing lists; carried runs, packed regions too, and hidden ranges; prior faces; sealed
  * pixels; see-through pixels, where most fronts are candidates as P2 enters
  * every see-through fragment, carried ones included), runs the P3 passes alone, and compares every pixel's output ids,
  * stencil, carry (a sealed pixel's terminator depth) and hidden range with
@@ -159,7 +159,8 @@ static uint32_t make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     }
     if (st->stencil != TV_STENCIL_TRIMMED)
         return umbrae;
-    /* a carried run: a front, then fronts, trims and their umbrae, in depth order */
+    /* a carried run: a front, then fronts, trims and their umbrae, in depth order; a trim's entry may
+     * hold a second trim or its umbra (TV_CARRY_*, pvs_carry_add) */
     uint32_t n = rnd_u(6);
     float d = rnd_depth();
     for (uint32_t i = 0; i < n; i++) {
@@ -168,7 +169,10 @@ static uint32_t make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         uint32_t id = kind == TV_ENTRY_FRONT ? base + rnd_u(IDS_PER_PIXEL) : rnd_region();
         if (kind == TV_ENTRY_FRONT && i > 0 && (see_through ? rnd_u(2) : rnd_u(4) == 0))
             id |= TV_ID_CANDIDATE; /* candidates behind the run's first front are carried */
-        st->carry[st->carry_count++] = (pvs_entry){d, kind, id};
+        uint32_t packed = kind == TV_ENTRY_TRIM ? rnd_u(6) : 0;
+        const uint32_t flags[6] = {0, 0, TV_CARRY_TWICE, TV_CARRY_TRIM2, TV_CARRY_UMBRA, TV_CARRY_TWICE | TV_CARRY_UMBRA};
+        float second = flags[packed] & (TV_CARRY_TRIM2 | TV_CARRY_UMBRA) ? d + 0.1f * (float)rnd_u(3) : 0.0f;
+        st->carry[st->carry_count++] = (pvs_entry){d, kind | flags[packed], id, second};
         d += 0.1f * (float)rnd_u(2);
     }
     if (rnd_u(3) == 0) {
@@ -227,7 +231,7 @@ static void upload(pvs_context* ctx, const case_data* c)
                              fbits(st->hide_begin), fbits(st->hide_end)};
         memcpy(ps + 4 * p, state, sizeof state);
         for (uint32_t i = 0; i < st->carry_count; i++) {
-            uint32_t e[4] = {fbits(st->carry[i].depth), st->carry[i].kind, st->carry[i].id, 0};
+            uint32_t e[4] = {fbits(st->carry[i].depth), st->carry[i].kind, st->carry[i].id, fbits(st->carry[i].second)};
             memcpy(carry + 4 * (p * TV_K_CARRY + i), e, sizeof e);
         }
         active[p] = p;
@@ -305,7 +309,8 @@ static uint32_t compare(pvs_context* ctx, case_data* c)
             same = ps[4 * p + 2] == fbits(st->hide_begin) && ps[4 * p + 3] == fbits(st->hide_end);
         for (uint32_t i = 0; same && !sealed && i < st->carry_count; i++) {
             const uint32_t* e = carry + 4 * (p * TV_K_CARRY + i);
-            same = e[0] == fbits(st->carry[i].depth) && e[1] == st->carry[i].kind && e[2] == st->carry[i].id;
+            same = e[0] == fbits(st->carry[i].depth) && e[1] == st->carry[i].kind && e[2] == st->carry[i].id &&
+                   e[3] == fbits(st->carry[i].second);
         }
         if (!same && bad++ < 5)
             printf("  pixel %u: ids 0x%02x (reference 0x%02x), stencil %u (%u), carry %u (%u)\n", p, got, want,

@@ -328,6 +328,95 @@ static void test_carry_overflow(void)
     TV_CHECK(s.stencil == TV_STENCIL_OVERFLOW && s.carry_count == 0);
 }
 
+/* A run carrying 22 trims of eleven regions and their umbrae (44 entries
+ * unpacked; Sponza's full carries were such runs): ten regions with a trim
+ * in front of the run's first front and two behind it, both moved to that
+ * front (an entry each, with the umbra), and one wholly behind it (its two
+ * trims in one entry, its umbra in another). They fit TV_K_CARRY, and the
+ * next layer resolves as if nothing had been carried: [1, 1.5] validated,
+ * hidden up to the nearest umbra 3 (region 30's), so 2 at 4 terminates. */
+static void test_carry_packs_regions(void)
+{
+    item items[1 + 10 * 4 + 3];
+    uint32_t n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    for (uint32_t r = 10; r < 20; r++) {
+        item region[4] = {T(0.9f, r), T(1.1f, r), T(1.2f, r), U(5.0f + (float)r, r)};
+        memcpy(items + n, region, sizeof region);
+        n += 4;
+    }
+    items[n++] = (item)T(1.3f, 30);
+    items[n++] = (item)T(1.4f, 30);
+    items[n++] = (item)U(3.0f, 30);
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    CHECK_NONE(r);
+    TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_TRIMMED && s.carry_count == 13);
+    TV_CHECK(s.carry[1].kind == (TV_ENTRY_TRIM | TV_CARRY_TWICE | TV_CARRY_UMBRA) && s.carry[1].depth == 1.0f);
+    r = RUN(s, B(1.5f), F(4.0f, 2), B(4.5f), F(20.0f, 3), B(21.0f));
+    CHECK_OUT(r, 1, 2);
+    TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_SEALED && s.term_depth == 4.0f);
+}
+
+/* The carry as pvs_carry_add packs it and the same entries unpacked (one a
+ * trim, one an umbra: what P3 carried before 2026-12-03) resolve alike:
+ * random runs of fronts, trims and umbrae of three regions, then a random
+ * layer of backs and fronts. */
+static void test_carry_packing_lossless(void)
+{
+    uint32_t seed = 7u, compared = 0, packed = 0;
+    for (uint32_t trial = 0; trial < 4000; trial++) {
+        item a[24], b[6];
+        uint32_t na = 0, nb = 0;
+        a[na++] = (item)F(1.0f, 1);
+        for (uint32_t i = 0; i < 6 + trial % 17; i++) {
+            seed = seed * 1664525u + 1013904223u;
+            uint32_t kind = (seed >> 8) % 4, region = 10 + (seed >> 12) % 3;
+            float d = 0.5f + 0.25f * (float)((seed >> 16) % 6);
+            a[na++] = kind == 0 ? (item)F(d, 2 + i) : kind == 3 ? (item)U(d + 2.0f, region) : (item)T(d, region);
+        }
+        for (uint32_t i = 0; i < 6; i++) {
+            seed = seed * 1664525u + 1013904223u;
+            float d = 0.5f + 0.4f * (float)((seed >> 16) % 8);
+            b[nb++] = (seed >> 8) % 2 ? (item)B(d) : (item)F(d, 30 + i);
+        }
+        pvs_pixel_state s = {0};
+        layer_result r = run_layer(&s, a, na);
+        pvs_pixel_state plain = s;
+        plain.carry_count = 0;
+        bool fits = true;
+        for (uint32_t i = 0; i < s.carry_count; i++) {
+            const pvs_entry* e = &s.carry[i];
+            float trim[2], u;
+            uint32_t t = pvs_carry_trims(e, trim);
+            packed += t == 2 || (e->kind & TV_CARRY_UMBRA) != 0;
+            for (uint32_t j = 0; j < (t ? t : 1) && fits; j++) {
+                fits = plain.carry_count < TV_K_CARRY;
+                if (fits)
+                    plain.carry[plain.carry_count++] = t ? (pvs_entry){trim[j], TV_ENTRY_TRIM, e->id, 0.0f} : *e;
+            }
+            if (fits && (e->kind & TV_CARRY_UMBRA) != 0 && pvs_carry_umbra(e, e->id, &u)) {
+                fits = plain.carry_count < TV_K_CARRY;
+                if (fits)
+                    plain.carry[plain.carry_count++] = (pvs_entry){u, TV_ENTRY_UMBRA, e->id, 0.0f};
+            }
+        }
+        if (r.overflowed || s.stencil != TV_STENCIL_TRIMMED || !fits)
+            continue;
+        layer_result r1 = run_layer(&s, b, nb), r2 = run_layer(&plain, b, nb);
+        bool same = r1.count == r2.count && memcmp(r1.out, r2.out, r1.count * sizeof r1.out[0]) == 0 &&
+                    s.stencil == plain.stencil && s.carry_count == plain.carry_count &&
+                    memcmp(s.carry, plain.carry, s.carry_count * sizeof s.carry[0]) == 0 &&
+                    s.hide_begin == plain.hide_begin && s.hide_end == plain.hide_end;
+        if (!same)
+            printf("  trial %u: packed and unpacked carries resolve differently\n", trial);
+        TV_CHECK(same);
+        compared++;
+    }
+    printf("  %u pixels compared, %u packed entries\n", compared, packed);
+    TV_CHECK(compared > 1000 && packed > 1000);
+}
+
 /* The ids two layers output, the spill draws' included, as a bit set over
  * ids below 64 (BACK_ID as bit 63). */
 static uint64_t two_layers(const item* a, uint32_t na, const item* b, uint32_t nb, uint32_t pages, bool* lost)
@@ -389,6 +478,8 @@ int main(void)
     TV_TEST_RUN(test_overflow_back_list);
     TV_TEST_RUN(test_prior_faces);
     TV_TEST_RUN(test_carry_overflow);
+    TV_TEST_RUN(test_carry_packs_regions);
+    TV_TEST_RUN(test_carry_packing_lossless);
     TV_TEST_RUN(test_pool_exhaustion);
     return tv_test_finish();
 }
