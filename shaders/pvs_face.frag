@@ -37,6 +37,7 @@ layout(location = 5) flat in float v_far;
 layout(location = 6) flat in float v_near;
 layout(location = 7) flat in uint v_id_flags;
 layout(location = 8) flat in uint v_see;
+layout(location = 9) flat in vec3 v_inv_w;
 
 layout(location = 0) out uint o_triangle;
 
@@ -81,6 +82,50 @@ bool touches_pixel()
     return true;
 }
 
+// The depth a candidate enters at: the nearest depth of the undilated
+// triangle's part inside the pixel's square, never nearer than `bound`
+// (max(nearest corner, centre depth - half the slope), the nearest the plane
+// has anywhere in the square). 1/w is affine in screen space, so over that
+// convex part it is largest at one of its corners: a triangle corner in the
+// square, a square corner in the triangle, or where an edge crosses a side.
+// Nearer only adds output (a candidate never occludes), so the part is
+// taken with a slack of 1/256 pixel; if it is found empty, or the triangle
+// was not dilated (a see-through one with a corner behind v*), `bound` stands.
+float candidate_depth(float bound)
+{
+    if (v_s2.z == 0.0)
+        return bound;
+    vec2 s[3] = vec2[3](v_s01.xy, v_s01.zw, v_s2.xy);
+    const float e = 1.0 / 256.0;
+    vec2 lo = gl_FragCoord.xy - 0.5 - e, hi = gl_FragCoord.xy + 0.5 + e;
+    float inv = 0.0; // the largest 1/w found
+    for (uint i = 0u; i < 3u; i++) {
+        if (all(greaterThanEqual(s[i], lo)) && all(lessThanEqual(s[i], hi)))
+            inv = max(inv, v_inv_w[i]);
+        vec2 a = s[i], d = s[(i + 1u) % 3u] - a;
+        for (uint k = 0u; k < 4u; k++) { // the sides x = lo.x, x = hi.x, y = lo.y, y = hi.y
+            uint axis = k / 2u;
+            float side = (k & 1u) == 0u ? lo[axis] : hi[axis];
+            if (d[axis] == 0.0)
+                continue;
+            float t = (side - a[axis]) / d[axis], o = a[1u - axis] + t * d[1u - axis];
+            if (t >= 0.0 && t <= 1.0 && o >= lo[1u - axis] && o <= hi[1u - axis])
+                inv = max(inv, mix(v_inv_w[i], v_inv_w[(i + 1u) % 3u], t));
+        }
+    }
+    for (uint k = 0u; k < 4u; k++) {
+        vec2 q = vec2((k & 1u) == 0u ? lo.x : hi.x, k < 2u ? lo.y : hi.y);
+        bool in_tri = true;
+        for (uint i = 0u; i < 3u; i++) {
+            vec2 d = s[(i + 1u) % 3u] - s[i];
+            in_tri = in_tri && v_s2.z * cross2(d, q - s[i]) >= -e * length(d);
+        }
+        if (in_tri)
+            inv = max(inv, dot(bary(s, q), v_inv_w));
+    }
+    return inv > 0.0 ? max(bound, 1.0 / inv) : bound;
+}
+
 // The spill draws after P3 (exact and dilated; P3 requests them, see
 // request_spill) at pixels whose front list overflowed in this layer. They
 // draw only the triangles that lost a fragment somewhere in P2 (the spill
@@ -99,7 +144,7 @@ void spill(uint p, float w, float slope)
     }
     if (v_see == 0u && (v_s2.z == 0.0 || covers_centre()))
         return; // not a candidate: the exact spill draw's
-    float depth = max(v_near, w - 0.5 * slope); // as P2 pushed it
+    float depth = candidate_depth(max(v_near, w - 0.5 * slope)); // as P2 pushed it
     if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE])) // P3's bound
         pvs_mark(v_triangle, TV_REASON_OVERFLOW);
 }
@@ -177,7 +222,7 @@ void main()
         // covering the centre does not hide it by comparing centre depths
         // (it never occludes, so nearer only means more output). spill()
         // repeats this.
-        w = inside;
+        w = candidate_depth(inside);
         id |= TV_ID_CANDIDATE;
     }
     if (pvs_sealed(p)) { // a face of a later layer in front of the terminator (pvs_sealed_output)

@@ -22,6 +22,7 @@ layout(location = 5) flat out float v_far; // farthest corner's depth (clip w)
 layout(location = 6) flat out float v_near; // nearest corner's depth (clip w)
 layout(location = 7) flat out uint v_id_flags; // TV_ID_CULLED / TV_ID_STRADDLED from P1's list
 layout(location = 8) flat out uint v_see;      // 1: see-through (pvs_seethrough), looked up once per triangle, not per fragment
+layout(location = 9) flat out vec3 v_inv_w; // 1 / clip w of the corners (dilated pass; 0: not dilated)
 
 // Two enlargements, each containing every pixel the triangle touches (its
 // Minkowski sum with the pixel square); the first is drawn unless the
@@ -46,7 +47,6 @@ layout(location = 8) flat out uint v_see;      // 1: see-through (pvs_seethrough
 
 vec2 screen(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * vec2(view.width, view.height); }
 
-float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
 
 // Corner i moved out by the pixel's half extent along both of its edges.
 vec2 moved_corner(vec2 s[3], float orient, uint i)
@@ -85,14 +85,6 @@ float rectangle_triangle(vec2 s[3], out vec2 t[3])
     return 2.0 * w * ht;
 }
 
-// Barycentric weights of screen point p (affine: any p, inside or not).
-vec3 bary(vec2 s[3], vec2 p)
-{
-    float area = cross2(s[1] - s[0], s[2] - s[0]);
-    float b1 = cross2(p - s[0], s[2] - s[0]) / area, b2 = cross2(s[1] - s[0], p - s[0]) / area;
-    return vec3(1.0 - b1 - b2, b1, b2);
-}
-
 void main()
 {
     uint slot = uint(gl_VertexIndex) / 3u;
@@ -111,6 +103,7 @@ void main()
         v_s01 = vec4(0.0);
         v_s2 = vec3(0.0);
         v_far = v_near = 0.0;
+        v_inv_w = vec3(0.0);
         v_see = 0u;
         return;
     }
@@ -122,6 +115,7 @@ void main()
     v_near = min(min(c[0].w, c[1].w), c[2].w);
     v_s01 = vec4(0.0);
     v_s2 = vec3(0.0);
+    v_inv_w = vec3(0.0);
     v_uv = pvs_corner_uv(tri, corner);
     if ((pc.kind & TV_PVS_KIND_WIDE) != 0u && c[0].w > 0.0 && c[1].w > 0.0 && c[2].w > 0.0) {
         vec2 s[3] = vec2[3](screen(c[0]), screen(c[1]), screen(c[2]));
@@ -134,6 +128,7 @@ void main()
             vec2 t[3];
             float rect = rectangle_triangle(s, t);
             vec3 inv_w = 1.0 / vec3(c[0].w, c[1].w, c[2].w);
+            v_inv_w = inv_w;
             bool ahead = dot(bary(s, t[0]), inv_w) > 0.0 && dot(bary(s, t[1]), inv_w) > 0.0 &&
                          dot(bary(s, t[2]), inv_w) > 0.0;
             if (ahead && rect < 0.125 * abs(cross2(m[1] - m[0], m[2] - m[0]))) {

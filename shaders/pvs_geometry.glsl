@@ -46,4 +46,14 @@ bool pvs_seethrough(uint tri)
     return pvs_is_proxy(tri) || (tv_materials[tv_tri_material[tri]].flags & TV_MAT_ALPHA_BLEND) != 0u;
 }
 
+float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// Barycentric weights of screen point p (affine: any p, inside or not).
+vec3 bary(vec2 s[3], vec2 p)
+{
+    float area = cross2(s[1] - s[0], s[2] - s[0]);
+    float b1 = cross2(p - s[0], s[2] - s[0]) / area, b2 = cross2(s[1] - s[0], p - s[0]) / area;
+    return vec3(1.0 - b1 - b2, b1, b2);
+}
+
 #endif

@@ -1,9 +1,9 @@
 /* test_pvs_gpu_cases.c - the GPU trim-region PVS on constructed occluder
  * configurations, each with the triangles it must hide and keep:
  * interpenetrating occluders, thin walls, umbrae inside umbrae, occluders
- * across layers, back faces past edges, culled backs, cracks, slivers,
- * a slot under a lifted wall, openings at the view edge and through a gap,
- * and coincident twins (pvs_gpu_fixture.h). */
+ * across layers, back faces past edges, culled backs, cracks, slivers, a
+ * candidate behind a back, a slot under a lifted wall, openings at the view
+ * edge and through a gap, and coincident twins (pvs_gpu_fixture.h). */
 #include "pvs_gpu_checks.h"
 #include "pvs_shared.h"
 
@@ -181,6 +181,31 @@ static void test_sliver_seen_from_behind(void)
     const float strip[4][3] = {{x1, y0, z}, {x0, y0, z}, {x0, y1, z}, {x1, y1, z}}; /* faces -z */
     uint32_t back = fx_quad(&f.scene, strip, double_sided(&f));
     check_configuration(&f, "a sliver seen from behind past a slab's edge", 0.1f, FN_SIMPLE, NULL, 0, &back, 1);
+}
+
+/* A 3 m thick box 3 m away, its right edge just right of v*, a far wall,
+ * and behind the box a see-through pane (no silhouettes of its own) tilted
+ * away from v*, 0.35 m of depth per pixel up the image: its lower edge runs
+ * from off-screen 5.9 m away to 6.1 m, 0.3 m left of the box's edge, inside
+ * the box's trim region at Δ = 0.3 m, where the umbra ends beyond 8 m. The
+ * whole pane is hidden from the viewcell (every line from it to an eye
+ * crosses the box's back). At a pixel its lower edge crosses off the
+ * centre, the square's nearest corner lies below the edge, off the pane,
+ * where its plane is nearer than the box's back (6 m): a candidate entered
+ * at max(nearest corner, centre - half the slope) fell inside the box's
+ * validated interval and was output; at the nearest depth of the pane's
+ * part inside the pixel it lies behind the back, in the umbra. */
+static void test_candidate_behind_a_validated_back(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    uint32_t glass = fx_material(&f.scene, 0.7f, 0.8f, 0.9f, SCN_ALPHA_BLEND, false, -1);
+    add_box(&f.scene, -40.0f, -2.0f, -6.0f, 0.05f, 2.0f, -3.0f, m);
+    const float tilted[4][3] = {{-30.0f, -0.3f, -5.9f}, {-0.3f, -0.3f, -6.1f}, {-1.3f, -0.156f, -8.5f},
+                                {-30.0f, -0.156f, -8.5f}}; /* faces v* */
+    fx_quad_z(&f.scene, -60.0f, -40.0f, 60.0f, 40.0f, -50.0f, m); /* the umbra's depth bound */
+    uint32_t pane = fx_quad(&f.scene, tilted, glass); /* last: ids pane.. are its two */
+    check_configuration(&f, "a candidate behind a validated interval's back", 0.3f, FN_SIMPLE, &pane, 1, NULL, 0);
 }
 
 /* A 0.2 m thick wall 5 m away standing on a floor 1.2 m below v* that runs
@@ -446,6 +471,7 @@ int main(void)
     TV_TEST_RUN(test_open_quad_past_a_slab_edge);
     TV_TEST_RUN(test_late_face_before_terminator);
     TV_TEST_RUN(test_sliver_seen_from_behind);
+    TV_TEST_RUN(test_candidate_behind_a_validated_back);
     TV_TEST_RUN(test_crack_in_a_pillar);
     TV_TEST_RUN(test_wall_standing_on_a_floor);
     TV_TEST_RUN(test_quad_seen_under_a_lifted_wall);
