@@ -3,6 +3,7 @@
 #
 #   compare.sh check  EXPECTED.json SUMMARY.json   fail (exit 1) on any regression, with a table
 #   compare.sh update EXPECTED.json SUMMARY.json NOTE  rewrite EXPECTED.json from SUMMARY.json
+#                                                   (the metrics below and any the file already has)
 #
 # EXPECTED.json holds one metric per line:
 #   "psnr_mean_db": {"expected": 47.63, "better": "higher", "abs": 0.5, "rel": 0},
@@ -44,11 +45,19 @@ case $mode in
 update)
     note=${4:-}
     tmp=$expected.tmp
+    # the defaults, then the metrics the existing file adds (e.g. a movers replay's dynamic_*)
+    table=$DEFAULTS
+    if [ -f "$expected" ]; then
+        extra=$(grep '"expected":' "$expected" | sed 's/^ *"\([a-z0-9_]*\)".*/\1/' | while read -r key; do
+            printf '%s\n' "$DEFAULTS" | grep -q "^$key " || echo "$key x 0 0"
+        done)
+        [ -n "$extra" ] && table=$(printf '%s\n%s' "$DEFAULTS" "$extra")
+    fi
     {
         printf '{\n  "note": "%s",\n  "metrics": {\n' "$note"
         n=0
-        total=$(printf '%s\n' "$DEFAULTS" | wc -l)
-        printf '%s\n' "$DEFAULTS" | while read -r key better abs rel; do
+        total=$(printf '%s\n' "$table" | wc -l)
+        printf '%s\n' "$table" | while read -r key better abs rel; do
             n=$((n + 1))
             # keep tolerances already reviewed in the existing file
             if [ -f "$expected" ] && line=$(grep "\"$key\": {" "$expected"); then
