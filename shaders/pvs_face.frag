@@ -91,38 +91,59 @@ bool touches_pixel()
 // Nearer only adds output (a candidate never occludes), so the part is
 // taken with a slack of 1/256 pixel; if it is found empty, or the triangle
 // was not dilated (a see-through one with a corner behind v*), `bound` stands.
+// The largest 1/w of edge a-b (1/w ia, ib) at a, if a lies in the square
+// [lo, hi], and where the edge crosses the square's sides. Written without
+// run-time indexed arrays or loops: llvmpipe keeps those in memory.
+float edge_inv(vec2 a, vec2 b, float ia, float ib, vec2 lo, vec2 hi)
+{
+    float inv = all(greaterThanEqual(a, lo)) && all(lessThanEqual(a, hi)) ? ia : 0.0;
+    vec2 d = b - a;
+    if (d.x != 0.0) { // the sides x = lo.x, x = hi.x
+        vec2 t = (vec2(lo.x, hi.x) - a.x) / d.x, o = a.y + t * d.y;
+        if (t.x >= 0.0 && t.x <= 1.0 && o.x >= lo.y && o.x <= hi.y)
+            inv = max(inv, mix(ia, ib, t.x));
+        if (t.y >= 0.0 && t.y <= 1.0 && o.y >= lo.y && o.y <= hi.y)
+            inv = max(inv, mix(ia, ib, t.y));
+    }
+    if (d.y != 0.0) { // the sides y = lo.y, y = hi.y
+        vec2 t = (vec2(lo.y, hi.y) - a.y) / d.y, o = a.x + t * d.x;
+        if (t.x >= 0.0 && t.x <= 1.0 && o.x >= lo.x && o.x <= hi.x)
+            inv = max(inv, mix(ia, ib, t.x));
+        if (t.y >= 0.0 && t.y <= 1.0 && o.y >= lo.x && o.y <= hi.x)
+            inv = max(inv, mix(ia, ib, t.y));
+    }
+    return inv;
+}
+
+// 1/w at square corner q if the triangle (s0, s1, s2) holds it, else 0.
+float corner_inv(vec2 s0, vec2 s1, vec2 s2, vec2 q, float e)
+{
+    vec2 d0 = s1 - s0, d1 = s2 - s1, d2 = s0 - s2;
+    bool in_tri = v_s2.z * cross2(d0, q - s0) >= -e * length(d0) && v_s2.z * cross2(d1, q - s1) >= -e * length(d1) &&
+                  v_s2.z * cross2(d2, q - s2) >= -e * length(d2);
+    return in_tri ? dot(bary(vec2[3](s0, s1, s2), q), v_inv_w) : 0.0;
+}
+
+// The depth a candidate enters at: the nearest depth of the undilated
+// triangle's part inside the pixel's square, never nearer than `bound`
+// (max(nearest corner, centre depth - half the slope), the nearest the plane
+// has anywhere in the square). 1/w is affine in screen space, so over that
+// convex part it is largest at one of its corners: a triangle corner in the
+// square, a square corner in the triangle, or where an edge crosses a side.
+// Nearer only adds output (a candidate never occludes), so the part is
+// taken with a slack of 1/256 pixel; if it is found empty, or the triangle
+// was not dilated (a see-through one with a corner behind v*), `bound` stands.
 float candidate_depth(float bound)
 {
     if (v_s2.z == 0.0)
         return bound;
-    vec2 s[3] = vec2[3](v_s01.xy, v_s01.zw, v_s2.xy);
+    vec2 s0 = v_s01.xy, s1 = v_s01.zw, s2 = v_s2.xy;
     const float e = 1.0 / 256.0;
     vec2 lo = gl_FragCoord.xy - 0.5 - e, hi = gl_FragCoord.xy + 0.5 + e;
-    float inv = 0.0; // the largest 1/w found
-    for (uint i = 0u; i < 3u; i++) {
-        if (all(greaterThanEqual(s[i], lo)) && all(lessThanEqual(s[i], hi)))
-            inv = max(inv, v_inv_w[i]);
-        vec2 a = s[i], d = s[(i + 1u) % 3u] - a;
-        for (uint k = 0u; k < 4u; k++) { // the sides x = lo.x, x = hi.x, y = lo.y, y = hi.y
-            uint axis = k / 2u;
-            float side = (k & 1u) == 0u ? lo[axis] : hi[axis];
-            if (d[axis] == 0.0)
-                continue;
-            float t = (side - a[axis]) / d[axis], o = a[1u - axis] + t * d[1u - axis];
-            if (t >= 0.0 && t <= 1.0 && o >= lo[1u - axis] && o <= hi[1u - axis])
-                inv = max(inv, mix(v_inv_w[i], v_inv_w[(i + 1u) % 3u], t));
-        }
-    }
-    for (uint k = 0u; k < 4u; k++) {
-        vec2 q = vec2((k & 1u) == 0u ? lo.x : hi.x, k < 2u ? lo.y : hi.y);
-        bool in_tri = true;
-        for (uint i = 0u; i < 3u; i++) {
-            vec2 d = s[(i + 1u) % 3u] - s[i];
-            in_tri = in_tri && v_s2.z * cross2(d, q - s[i]) >= -e * length(d);
-        }
-        if (in_tri)
-            inv = max(inv, dot(bary(s, q), v_inv_w));
-    }
+    float inv = max(max(edge_inv(s0, s1, v_inv_w.x, v_inv_w.y, lo, hi), edge_inv(s1, s2, v_inv_w.y, v_inv_w.z, lo, hi)),
+                    edge_inv(s2, s0, v_inv_w.z, v_inv_w.x, lo, hi));
+    inv = max(inv, max(max(corner_inv(s0, s1, s2, lo, e), corner_inv(s0, s1, s2, vec2(hi.x, lo.y), e)),
+                       max(corner_inv(s0, s1, s2, vec2(lo.x, hi.y), e), corner_inv(s0, s1, s2, hi, e))));
     return inv > 0.0 ? max(bound, 1.0 / inv) : bound;
 }
 
