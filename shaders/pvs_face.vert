@@ -47,7 +47,6 @@ layout(location = 9) flat out vec3 v_inv_w; // 1 / clip w of the corners (dilate
 
 vec2 screen(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * vec2(view.width, view.height); }
 
-
 // Corner i moved out by the pixel's half extent along both of its edges.
 vec2 moved_corner(vec2 s[3], float orient, uint i)
 {

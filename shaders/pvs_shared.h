@@ -233,7 +233,7 @@
 #define TV_PVS_BIND_KALLOC     10 // uint: pages taken in this layer (the pool's next free page, reset every layer), then per tile and layer a copy of it after P2
 #define TV_PVS_A_TAKEN  0u
 #define TV_PVS_A_LAYERS 1u // slot of tile 0's layer 0 in TV_PVS_BIND_KALLOC
-#define TV_PVS_BIND_PIXCOUNT   11 // uvec4 per pixel: front, back, trim, umbra counters
+#define TV_PVS_BIND_PIXCOUNT   11 // uvec4 per pixel: front, back and region-entry counters; the fourth only marks lost umbra-list pages
 #define TV_PVS_BIND_PIXSTATE   12 // uvec4 per pixel: stencil, carry count (sealed: terminator depth bits), hide begin/end bits
 #define TV_PVS_BIND_CARRY      13 // uvec4 (depth bits, kind | TV_CARRY_* flags, id, second depth bits) x TV_K_CARRY per pixel
 #define TV_PVS_BIND_ACTIVE     14 // uint per pixel: active pixel stencil

@@ -14,9 +14,9 @@
 #       as many frames as frames.csv has complete rows, and no file of the older run left
 #   replay_checks.sh sigint-render DIR SECONDS command...  SIGINT mid-run of trimvr render: non-zero
 #       exit, "interrupted" on stderr, frames.csv rows complete
-#   replay_checks.sh sigterm-load SECONDS command...  SIGTERM once the command's stderr names the
-#       Vulkan device (the scene is loading, nothing computed yet): non-zero exit, "interrupted" on
-#       stderr; for a replay (--out DIR) summary.json marked interrupted with 0 frames
+#   replay_checks.sh sigterm-load DIR SECONDS command...  SIGTERM once the command's stderr names
+#       the Vulkan device (the scene is loading, nothing computed yet): non-zero exit, "interrupted"
+#       on stderr; for a replay, DIR/summary.json marked interrupted with 0 frames
 #   replay_checks.sh pvs-again DIR TRIMVR SCENE pvs-option...  pvs.csv's last single-frustum PVS computed
 #       again by `trimvr pvs` from its row (centre, direction, up, delta, PVS FOV): the same triangle count
 set -u
@@ -202,15 +202,11 @@ sigint-render)
     echo "ok: exit $code: $msg"
     ;;
 sigterm-load)
-    secs=$1
-    shift
+    out=$1
+    secs=$2
+    shift 2
     run_and_signal "" "$secs" TERM "$@"
     check_sigint
-    for a in "$@"; do
-        [ "${out_next:-}" = 1 ] && out=$a
-        out_next=0
-        [ "$a" = --out ] && out_next=1
-    done
     if [ "$2" = replay ]; then
         grep -q '"interrupted": true' "$out/summary.json" || fail "$out/summary.json is not marked \"interrupted\": true"
         sh "$0" summary "$out" "frames == 0" || exit 1
