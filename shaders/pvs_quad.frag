@@ -21,7 +21,8 @@ void main()
 {
     o_unused = 0u;
     // The umbra's footprint for the spill span (pvs_umbra_pack): its nearest
-    // depth over the square of two pixels' side around the centre (over the
+    // depth over the square of two pixels' side around the centre (eyes see
+    // up to 0.7 px past the centre's offset, docs/pvs-edge-cases.md; over the
     // pixel's own, interior_walk lost 4 FN px); 1 / depth is affine in the
     // image, so it is exact; derivatives before any return (uniform flow).
     float inv_umbra = v_w_over.z * gl_FragCoord.w;
