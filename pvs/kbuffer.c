@@ -240,13 +240,72 @@ bool pvs_sealed_output(const pvs_pixel_state* state, float depth)
     return depth < state->term_depth && !hidden;
 }
 
+bool pvs_spill_hidden(const pvs_pixel_state* state, float depth)
+{
+    return state->spill_lo < depth && depth < state->spill_hi;
+}
+
 bool pvs_spill_output(const pvs_pixel_state* state, uint32_t id, float depth)
 {
     assert(state);
     if (state->stencil == TV_STENCIL_OVERFLOW)
         return true;
-    if ((id & TV_ID_CANDIDATE) == 0)
+    if ((id & TV_ID_CANDIDATE) == 0 || pvs_spill_hidden(state, depth))
         return false;
     return state->stencil == TV_STENCIL_TRIMMED ||
            (state->stencil == TV_STENCIL_SEALED && depth < state->term_depth);
+}
+
+/* The low byte of the bits is the footprint's code: 0 the centre depth itself, else q + 1 for q / 256 of it. The
+ * centre keeps 16 significant bits, so centre * q is exact and the GPU decodes the same float. */
+#define UMBRA_CODE 0xFFu
+
+float pvs_umbra_centre(float packed)
+{
+    return bits_depth(bits(packed) & ~UMBRA_CODE);
+}
+
+float pvs_umbra_footprint(float packed)
+{
+    uint32_t code = bits(packed) & UMBRA_CODE;
+    float centre = pvs_umbra_centre(packed);
+    return code == 0 ? centre : centre * (float)(code - 1) * (1.0f / 256.0f);
+}
+
+float pvs_umbra_pack(float centre, float footprint)
+{
+    if (!(centre > 0.0f && centre < INFINITY))
+        return centre; /* none (0) or not a depth */
+    uint32_t b = bits(centre) & ~UMBRA_CODE;
+    float c = bits_depth(b);
+    if (footprint >= c)
+        return c;
+    /* the largest q <= 254 with c * q / 256 <= footprint; the estimate is off by one at most (rounding of the
+     * division, which the GPU may round otherwise), the steps compare exact products */
+    float q = fminf(fmaxf(floorf(footprint / c * 256.0f), 0.0f), 254.0f);
+    if (q > 0.0f && c * q * (1.0f / 256.0f) > footprint)
+        q -= 1.0f;
+    if (q < 254.0f && c * (q + 1.0f) * (1.0f / 256.0f) <= footprint)
+        q += 1.0f;
+    return bits_depth(b | ((uint32_t)q + 1u));
+}
+
+bool pvs_umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth, float* footprint)
+{
+    if (pvs_kbuf_deep(k))
+        return false;
+    float nearest = INFINITY, fp = INFINITY, u;
+    for (uint32_t i = 0; i < k->umbra_held + s->carry_count; i++) {
+        if (i < k->umbra_held ? k->umbra_region[i] != region
+                              : !pvs_carry_umbra(&s->carry[i - k->umbra_held], region, &u))
+            continue;
+        u = i < k->umbra_held ? k->umbra_depth[i] : u;
+        nearest = fminf(nearest, pvs_umbra_centre(u));
+        fp = fminf(fp, pvs_umbra_footprint(u));
+    }
+    if (nearest == INFINITY)
+        return false;
+    *depth = nearest;
+    *footprint = fp;
+    return true;
 }

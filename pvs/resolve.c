@@ -107,32 +107,8 @@ static uint32_t resolve_overflow(pvs_pixel_state* s, const pvs_kbuf* k, uint32_t
         emit(out, &n, k->back_tri[i]);
     s->stencil = TV_STENCIL_OVERFLOW;
     s->carry_count = 0;
-    s->hide_begin = s->hide_end = 0.0f;
+    s->hide_begin = s->hide_end = s->spill_lo = s->spill_hi = 0.0f;
     return n;
-}
-
-/* Depth of the umbra of trim region `region` at this pixel (nearest if it
- * was rasterised more than once), from this layer or carried. None at a deep
- * pixel: an umbra ends where the pixel's centre ray leaves it, and where many
- * faces lie behind an occluder, some are seen nearer its edge (trim-regions.md). */
-static bool umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth)
-{
-    if (pvs_kbuf_deep(k))
-        return false;
-    float nearest = INFINITY;
-    for (uint32_t i = 0; i < k->umbra_held; i++) {
-        if (k->umbra_region[i] == region)
-            nearest = fminf(nearest, k->umbra_depth[i]);
-    }
-    float u;
-    for (uint32_t i = 0; i < s->carry_count; i++) {
-        if (pvs_carry_umbra(&s->carry[i], region, &u))
-            nearest = fminf(nearest, u);
-    }
-    if (nearest == INFINITY)
-        return false;
-    *depth = nearest;
-    return true;
 }
 
 static bool has_depth(float d)
@@ -195,6 +171,7 @@ typedef struct intervals {
      * straddled (validate) */
     bool show_back[IV_MAX];
     float end[IV_MAX]; /* depth where the hidden range of a valid interval ends */
+    float end_fp[IV_MAX]; /* the same at its umbrae's footprints (the spill span's, walk) */
     int32_t run;       /* first front of the trailing unfinished run, -1 none */
     float trims_lost;  /* nearest depth of a trim the list had no room for (INFINITY: none) */
 } intervals;
@@ -272,7 +249,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
         bool lost = hi >= iv->trims_lost;
         iv->valid[v] = lost;
         bool cracked = false;
-        iv->end[v] = hi;
+        iv->end[v] = iv->end_fp[v] = hi;
         for (uint32_t i = 0; i < n; i++) {
             if (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth >= iv->trims_lost)
                 continue; /* found room by arrival order (region_meets) */
@@ -283,17 +260,19 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
                 cracked = true;
             if (lost || seq[i].kind != TV_ENTRY_TRIM || !region_meets(seq, n, i, lo, hi, iv->trims_lost))
                 continue;
-            float u = hi;
-            if (!umbra_depth(s, k, seq[i].id, &u) || u < hi)
+            float u = hi, f = hi;
+            if (!pvs_umbra_depth(s, k, seq[i].id, &u, &f) || u < hi)
                 u = hi;
+            f = f < hi ? hi : f;
             iv->end[v] = iv->valid[v] && iv->end[v] < u ? iv->end[v] : u;
+            iv->end_fp[v] = iv->valid[v] && iv->end_fp[v] < f ? iv->end_fp[v] : f;
             iv->valid[v] = true;
         }
         /* Through a crack the eyes see the inside, and with the back culled
          * whatever lies behind it: the interval hides its inside only. */
         if (cracked && is_culled(&seq[iv->back[v]])) {
             iv->valid[v] = true;
-            iv->end[v] = hi;
+            iv->end[v] = iv->end_fp[v] = hi;
         }
         /* the eyes see the back through the crack, or a straddled back's
          * front past the edge (an unseen culled back emits nothing) */
@@ -353,12 +332,14 @@ static uint32_t replace_backs(const pvs_pixel_state* s, const seq_entry* seq, ui
  * terminator sealed the pixel and sets *term to its depth and s's hidden
  * range to the last one before it (from the back of the interval that
  * opened it, or the carried range's start, to where the prefix returns to
- * 0), which pvs_sealed_output reads. */
+ * 0), which pvs_sealed_output reads; and s's spill span (resolve.h): the
+ * footprints' `reach` joins an interval's from its back (a carried range's
+ * from its start: hide_end_fp) where that lies within it. */
 static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2, uint32_t m, intervals* iv,
                  uint32_t* out, uint32_t* n_out, float* term)
 {
     int32_t prefix = 0;
-    float open = 0.0f, span_lo = 0.0f, span_hi = 0.0f;
+    float open = 0.0f, reach = 0.0f, span_lo = 0.0f, span_hi = 0.0f;
     for (uint32_t i = 0; i < m; i++) {
         const seq_entry* e = &seq2[i];
         bool is_face = e->kind == TV_ENTRY_FRONT || e->kind == TV_ENTRY_BACK;
@@ -367,12 +348,19 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
             if (prefix == 0 && iv->show_back[e->interval])
                 emit(out, n_out, seq[iv->back[e->interval]].id);
         }
-        if (prefix == 0 && e->delta > 0)
-            open = e->kind == TV_ENTRY_BEGIN ? e->depth : seq[iv->back[e->interval]].depth;
+        if (e->delta > 0) {
+            float b = e->kind == TV_ENTRY_BEGIN ? e->depth : seq[iv->back[e->interval]].depth;
+            float f = e->kind == TV_ENTRY_BEGIN ? s->hide_end_fp : iv->end_fp[e->interval];
+            if (prefix == 0)
+                open = reach = b;
+            if (b <= reach && reach < f)
+                reach = f;
+        }
         prefix += e->delta;
         if (prefix == 0 && e->delta < 0) {
-            span_lo = open;
+            span_lo = s->spill_lo = open;
             span_hi = e->depth;
+            s->spill_hi = fminf(e->depth, reach);
         }
         if (is_candidate(e)) {
             /* It only touches the pixel: visible unless hidden, never an
@@ -410,8 +398,9 @@ static bool walk(pvs_pixel_state* s, const seq_entry* seq, const seq_entry* seq2
             if (e->kind == TV_ENTRY_BACK || e->interval < 0)
                 continue;
             *term = e->depth;
-            s->hide_begin = open;
+            s->hide_begin = s->spill_lo = open;
             s->hide_end = e->depth;
+            s->spill_hi = fminf(e->depth, reach);
             return true;
         }
         if (e->kind == TV_ENTRY_FRONT && e->interval < 0)
@@ -458,7 +447,8 @@ static void carry_range(pvs_pixel_state* s, const seq_entry* seq, uint32_t n, co
             return; /* nothing but trims this layer: keep the range as it is */
     }
     float lo = INFINITY, hi = -INFINITY;
-    if (s->hide_begin < s->hide_end && s->hide_begin <= tail && tail < s->hide_end) {
+    bool carried = s->hide_begin < s->hide_end && s->hide_begin <= tail && tail < s->hide_end;
+    if (carried) {
         lo = s->hide_begin;
         hi = s->hide_end;
     }
@@ -469,8 +459,17 @@ static void carry_range(pvs_pixel_state* s, const seq_entry* seq, uint32_t n, co
             hi = iv->end[v] > hi ? iv->end[v] : hi;
         }
     }
+    /* The footprints' end, from lo over the ranges that join within it (one pass: may stop short) */
+    float reach = carried && s->hide_begin <= lo ? fmaxf(lo, s->hide_end_fp) : lo;
+    for (uint32_t v = 0; v < iv->count; v++) {
+        float b = seq[iv->first[v]].depth;
+        if (iv->valid[v] && b <= tail && tail < iv->end[v] && b <= reach)
+            reach = fmaxf(reach, iv->end_fp[v]);
+    }
+    float end = lo < hi ? pvs_umbra_pack(hi, fminf(reach, hi)) : 0.0f;
     s->hide_begin = lo < hi ? lo : 0.0f;
-    s->hide_end = lo < hi ? hi : 0.0f;
+    s->hide_end = pvs_umbra_centre(end);
+    s->hide_end_fp = pvs_umbra_footprint(end);
 }
 
 /* Carries the trailing unfinished run: its fronts, the trims behind its
@@ -502,11 +501,12 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
         return false;
     uint32_t run_entries = c;
     for (uint32_t i = 0; i < run_entries; i++) {
-        float u;
+        float u, f;
         bool first = (next[i].kind & TV_CARRY_KIND) == TV_ENTRY_TRIM; /* the region's first entry */
         for (uint32_t j = 0; first && j < i; j++)
             first = next[j].id != next[i].id || (next[j].kind & TV_CARRY_KIND) != TV_ENTRY_TRIM;
-        if (first && umbra_depth(s, k, next[i].id, &u) && !pvs_carry_add(next, &c, TV_ENTRY_UMBRA, u, next[i].id))
+        if (first && pvs_umbra_depth(s, k, next[i].id, &u, &f) &&
+            !pvs_carry_add(next, &c, TV_ENTRY_UMBRA, pvs_umbra_pack(u, f), next[i].id))
             return false;
     }
     for (uint32_t i = 0; i < c; i++)
@@ -532,6 +532,7 @@ static uint32_t resolve_sealed(const pvs_pixel_state* s, const pvs_kbuf* kbuf, u
 static uint32_t resolve_layer(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_t* out, bool* overflowed)
 {
     *overflowed = false;
+    state->spill_lo = state->spill_hi = 0.0f; /* the walk's, in this layer only */
     if (state->stencil == TV_STENCIL_SEALED)
         return resolve_sealed(state, kbuf, out);
     if (state->stencil == TV_STENCIL_UNTRIMMED && kbuf->trim_count == 0)
@@ -544,7 +545,7 @@ static uint32_t resolve_layer(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint
     assert(!first || state->carry_count == 0); /* room for the prior faces */
     state->stencil = TV_STENCIL_TRIMMED;
     /* Where k_deep off would take the overflow policy (a front list longer than k), the carried hidden range
-     * counts for nothing, as the umbrae that ended it in earlier layers (umbra_depth; journal/2026-12-03-deepfix) */
+     * counts for nothing, as the umbrae that ended it in earlier layers (pvs_umbra_depth; journal/2026-12-03-deepfix) */
     if (pvs_kbuf_deep(kbuf) && kbuf->front_count > kbuf->k_exact)
         state->hide_begin = state->hide_end = 0.0f;
     seq_entry seq[SEQ_MAX], seq2[SEQ2_MAX];
@@ -575,7 +576,7 @@ static uint32_t resolve_layer(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint
         }
         state->stencil = TV_STENCIL_OVERFLOW;
         state->carry_count = 0;
-        state->hide_begin = state->hide_end = 0.0f;
+        state->hide_begin = state->hide_end = state->spill_lo = state->spill_hi = 0.0f;
     }
     return n_out;
 }
@@ -590,7 +591,8 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
         !has_depth(kbuf->candidate_lost) || kbuf->candidate_lost >= bound)
         return n;
     for (uint32_t i = 0; i < kbuf->front_held; i++) {
-        if ((kbuf->front_tri[i] & TV_ID_CANDIDATE) != 0 && kbuf->front_depth[i] < bound)
+        if ((kbuf->front_tri[i] & TV_ID_CANDIDATE) != 0 && kbuf->front_depth[i] < bound &&
+            !pvs_spill_hidden(state, kbuf->front_depth[i]))
             emit(out, &n, kbuf->front_tri[i]);
     }
     return n;

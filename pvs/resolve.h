@@ -107,7 +107,15 @@ typedef struct pvs_pixel_state {
     /* A hidden range when hide_begin < hide_end: carried to the next layer
      * while trimmed; once sealed, the last one in front of the terminator. */
     float hide_begin, hide_end;
+    /* While trimmed, where the hidden range's umbrae's footprints stop covering it (walk); carry_range rounds it and
+     * hide_end as pvs_umbra_pack does, so that the GPU keeps both in one word. */
+    float hide_end_fp;
     float term_depth; /* the terminator's depth once sealed */
+    /* The spill span of the latest resolve: the walk's last hidden span (from the back of the interval whose
+     * umbra opened it to where none is open, or to the terminator that sealed the pixel in it), cut where the
+     * umbrae's footprints stop covering it (walk); empty after a carried range's start, in overflow state and in
+     * any layer that did not walk. A candidate strictly inside it is hidden, lost or stored (pvs_spill_hidden). */
+    float spill_lo, spill_hi;
 } pvs_pixel_state;
 
 /* P2's insertion of one fragment of `kind` (TV_ENTRY_FRONT, BACK, TRIM or
@@ -128,6 +136,15 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth
  * fragment; an umbra alone is an entry without trim depth, dropped
  * uncounted where the list is full: the GPU stores no umbra without trims). */
 bool pvs_kbuf_push_region(pvs_kbuf* kbuf, pvs_kpages* pages, float trim, float second, float umbra, uint32_t id);
+
+/* A region's umbra as P2 stores it (the entry's umbra slot, carried umbrae): the depth where the pixel centre's
+ * ray leaves the umbra, which the walk hides up to, rounded down to 16 significant bits, and in the low byte of its
+ * bits its footprint (P2: its nearest depth over the square of two pixels' side around the pixel's centre) as a
+ * fraction of it, rounded down, where the spill span ends (pvs_spill_hidden; docs/journal/2026-12-03-fpumbra.md).
+ * A depth whose low byte is 0 has its centre depth as footprint; 0 and +inf (none) pack as themselves. */
+float pvs_umbra_pack(float centre, float footprint);
+float pvs_umbra_centre(float packed);
+float pvs_umbra_footprint(float packed);
 
 /* A deep pixel: k_exact set, a list longer than it, none past its capacity
  * (docs/trim-regions.md, "Overflow policy"). */
@@ -162,10 +179,16 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
  * list full must be added to the PVS. At an overflowed pixel every one; at
  * a pixel left open, every candidate (a lost front would have overflowed
  * it); at a pixel sealed in this layer, the candidates in front of its
- * terminator (lost fronts lie behind it); at an untrimmed pixel none: its
- * visibility buffer holds its nearest face, and P3 ignores its fronts. The
- * GPU's spill draws after P3 decide the same way. */
+ * terminator (lost fronts lie behind it), at either none inside the spill
+ * span (pvs_spill_hidden); at an untrimmed pixel none: its visibility buffer
+ * holds its nearest face, and P3 ignores its fronts. The GPU's spill draws
+ * after P3 decide the same way. */
 bool pvs_spill_output(const pvs_pixel_state* state, uint32_t id, float depth);
+
+/* Whether a candidate at `depth` lies strictly inside state's spill span: the walk hid it there (no validated
+ * interval's run starts inside the span) and, the span ending at the umbrae's footprints, no eye sees it through
+ * any point of the pixel, so a lost one is not output either (docs/trim-regions.md, "Overflow policy", 1). */
+bool pvs_spill_hidden(const pvs_pixel_state* state, float depth);
 
 /* Whether a front or back face at `depth` reaching a sealed pixel in a later
  * layer is output: when it lies in front of the terminator and outside the
@@ -188,6 +211,13 @@ uint32_t pvs_carry_trims(const pvs_entry* e, float depth[2]);
 
 /* Whether carried entry e holds region `id`'s umbra, and its depth. */
 bool pvs_carry_umbra(const pvs_entry* e, uint32_t id, float* depth);
+
+/* Depth of the umbra of trim region `region` at this pixel (nearest if it
+ * was rasterised more than once), from this layer or carried (resolve.c's
+ * validate and carry_run), and the nearest of its footprints. None at a deep
+ * pixel: an umbra ends where the pixel's centre ray leaves it, and where many
+ * faces lie behind an occluder, some are seen nearer its edge (trim-regions.md). */
+bool pvs_umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth, float* footprint);
 
 #ifdef __cplusplus
 }

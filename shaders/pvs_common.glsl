@@ -85,6 +85,33 @@ bool loop_budget_spent()
     return trips != view.k + 1u;
 }
 
+// pvs_umbra_pack, pvs_umbra_centre, pvs_umbra_footprint (pvs/kbuffer.c): a
+// region's umbra depth with its footprint's fraction in the low byte.
+float pvs_umbra_centre(float packed) { return uintBitsToFloat(floatBitsToUint(packed) & ~0xFFu); }
+
+float pvs_umbra_footprint(float packed)
+{
+    uint code = floatBitsToUint(packed) & 0xFFu;
+    float centre = pvs_umbra_centre(packed);
+    return code == 0u ? centre : centre * float(code - 1u) * (1.0 / 256.0);
+}
+
+float pvs_umbra_pack(float centre, float footprint)
+{
+    if (!(centre > 0.0) || isinf(centre))
+        return centre;
+    uint b = floatBitsToUint(centre) & ~0xFFu;
+    float c = uintBitsToFloat(b);
+    if (footprint >= c)
+        return c;
+    float q = clamp(floor(footprint / c * 256.0), 0.0, 254.0);
+    if (q > 0.0 && c * q * (1.0 / 256.0) > footprint)
+        q -= 1.0;
+    if (q < 254.0 && c * (q + 1.0) * (1.0 / 256.0) <= footprint)
+        q += 1.0;
+    return uintBitsToFloat(b | (uint(q) + 1u));
+}
+
 #ifdef TV_PVS_WRITES
 // Puts triangle `id` in the PVS. In explain mode (pvs_desc.explain) its flag
 // collects the TV_REASON_* bit of every rule that output it; otherwise a plain

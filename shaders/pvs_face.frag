@@ -166,7 +166,10 @@ void spill(uint p, float w, float slope)
     if (v_see == 0u && (v_s2.z == 0.0 || covers_centre()))
         return; // not a candidate: the exact spill draw's
     float depth = candidate_depth(max(v_near, w - 0.5 * slope)); // as P2 pushed it
-    if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE])) // P3's bound
+    float span_lo = uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_SPAN_LO]);
+    float span_hi = uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_SPAN_HI]);
+    if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE]) && // P3's bound
+        !(span_lo < depth && depth < span_hi)) // and its spill span
         pvs_mark(v_triangle, TV_REASON_OVERFLOW);
 }
 

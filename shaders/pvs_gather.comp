@@ -34,7 +34,7 @@ void main()
         pvs_mark(id, TV_REASON_VIS_WIDE);
     uint p = xy.y * view.tile_w + xy.x;
     uvec4 st = pixstate[p];
-    float hide_begin = uintBitsToFloat(st.z), hide_end = uintBitsToFloat(st.w);
+    float hide_begin = uintBitsToFloat(st.z), hide_end = pvs_umbra_centre(uintBitsToFloat(st.w)); // packed while trimmed
     // A carried trim lies at or behind the run's first front (P3 carries
     // only those), so its region meets the interval the run forms with a
     // back at infinity: validated, every front of it is output, as the walk

@@ -20,10 +20,17 @@ float clipped(float depth)
 void main()
 {
     o_unused = 0u;
+    // The umbra's footprint for the spill span (pvs_umbra_pack): its nearest
+    // depth over the square of two pixels' side around the centre (eyes see
+    // up to 0.7 px past the centre's offset, docs/pvs-edge-cases.md; over the
+    // pixel's own, interior_walk lost 4 FN px); 1 / depth is affine in the
+    // image, so it is exact; derivatives before any return (uniform flow).
+    float inv_umbra = v_w_over.z * gl_FragCoord.w;
+    float footprint = 1.0 / (inv_umbra + (abs(dFdx(inv_umbra)) + abs(dFdy(inv_umbra))));
     uint p = pvs_pixel();
     if (pvs_sealed(p))
         return;
-    float depth = pvs_depth(), umbra = depth / v_w_over.z;
+    float depth = pvs_depth(), umbra = pvs_umbra_pack(depth / v_w_over.z, footprint);
     // the midpoint, the nearer plane and the umbra in one entry; the farther
     // plane (grazing fronts only) in a second, without umbra
     pvs_push_region(p, clipped(depth), clipped(depth / v_w_over.x), umbra, v_region);

@@ -34,7 +34,7 @@ struct seq_entry {
 uint P;
 uvec4 cnt;
 uint stencil, carry_count;
-float hide_begin, hide_end;
+float hide_begin, hide_end, hide_end_fp; // resolve.c; while trimmed, pixstate.w packs hide_end and hide_end_fp
 carry_entry carry[TV_K_CARRY];
 
 // The trim sequence at ent[0, n), the re-sorted one at ent[S2, S2 + m):
@@ -47,10 +47,11 @@ bool iv_valid[IV_MAX];
 bool iv_show_back[IV_MAX]; // resolve.c's show_back: its back is output with its first front
 float trims_lost; // nearest depth of a trim the list had no room for (+inf: none): see validate()
 bool iv_hidden[IV_MAX]; // set by the walk: the run starts inside an umbra
-float iv_end[IV_MAX];
+float iv_end[IV_MAX], iv_end_fp[IV_MAX]; // resolve.c's end, end_fp
 int iv_run;
 uint n_out;
 float term_depth; // depth of the terminator that sealed the pixel
+float spill_lo, spill_hi; // resolve.c's spill span (walk), where a lost candidate is hidden
 bool overflow_due; // resolve_overflow is to run in finish_pixel: see there
 
 seq_entry make_entry(float depth, uint kind, uint id, int delta) { return seq_entry(depth, kind, id, -1, delta); }
@@ -137,31 +138,33 @@ void resolve_overflow()
         output_id(e.y);
     stencil = TV_STENCIL_OVERFLOW;
     carry_count = 0u;
-    hide_begin = hide_end = 0.0;
+    hide_begin = hide_end = spill_lo = spill_hi = 0.0;
 }
 
 // pvs_kbuf_deep: its umbrae count for nothing (resolve.c says why)
 bool deep_pixel() { return any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))); }
 
-bool umbra_depth(uint region, inout float depth)
+void umbra_min(float u, inout float nearest, inout float fp) { nearest = min(nearest, pvs_umbra_centre(u)); fp = min(fp, pvs_umbra_footprint(u)); }
+
+bool umbra_depth(uint region, inout float depth, inout float footprint)
 {
     if (deep_pixel())
         return false;
     const float inf = uintBitsToFloat(0x7F800000u);
-    float nearest = inf;
+    float nearest = inf, fp = inf;
     uvec2 a, b;
-    for (kb_regions c = kb_open_regions(); kb_next_region(c, a, b);) {
+    for (kb_regions c = kb_open_regions(); kb_next_region(c, a, b);)
         if (a.y == region && b.x != 0u)
-            nearest = min(nearest, kdepth(b.x));
-    }
+            umbra_min(kdepth(b.x), nearest, fp);
     for (uint i = 0u; i < carry_count; i++) {
         float u = inf;
         if (carry_umbra(carry[i], region, u))
-            nearest = min(nearest, u);
+            umbra_min(u, nearest, fp);
     }
     if (nearest == inf)
         return false;
     depth = nearest;
+    footprint = fp;
     return true;
 }
 
@@ -248,7 +251,7 @@ void validate(uint n)
         bool lost_here = hi >= trims_lost; // a lost trim may validate it, and its umbra be the nearest
         iv_valid[v] = lost_here;
         bool cracked = false;
-        iv_end[v] = hi;
+        iv_end[v] = iv_end_fp[v] = hi;
         for (uint i = 0u; i < n; i++) { // trims behind trims_lost found room by arrival order (resolve.c)
             bool crack = ent[i].kind == TV_ENTRY_TRIM && ent[i].depth < trims_lost && ent[i].id != TV_ID_PRIOR &&
                          (ent[i].id & TV_REGION_CRACK) != 0u;
@@ -259,12 +262,14 @@ void validate(uint n)
             if (!region_meets(r, lo, hi))
                 continue;
             float u = rg_umbra[r] < hi || isinf(rg_umbra[r]) ? hi : rg_umbra[r];
+            float f = isinf(rg_umbra[r]) ? hi : max(rg_umbra_fp[r], hi);
             iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
+            iv_end_fp[v] = iv_valid[v] && iv_end_fp[v] < f ? iv_end_fp[v] : f;
             iv_valid[v] = true;
         }
         if (cracked && is_culled(ent[iv_back[v]])) { // resolve.c: seen through
             iv_valid[v] = true;
-            iv_end[v] = hi;
+            iv_end[v] = iv_end_fp[v] = hi;
         }
         iv_show_back[v] = cracked || is_straddled(ent[iv_back[v]]);
     }
@@ -313,7 +318,7 @@ uint replace_backs(uint n)
 bool walk(uint m)
 {
     int prefix = 0;
-    float open = 0.0, span_lo = 0.0, span_hi = 0.0;
+    float open = 0.0, reach = 0.0, span_lo = 0.0, span_hi = 0.0;
     for (uint i = 0u; i < m; i++) {
         seq_entry e = ent[S2 + i];
         bool is_face = e.kind == TV_ENTRY_FRONT || e.kind == TV_ENTRY_BACK;
@@ -322,12 +327,19 @@ bool walk(uint m)
             if (prefix == 0 && iv_show_back[e.interval])
                 output_shown_back(ent[iv_back[e.interval]].id);
         }
-        if (prefix == 0 && e.delta > 0)
-            open = e.kind == TV_ENTRY_BEGIN ? e.depth : ent[iv_back[e.interval]].depth;
+        if (e.delta > 0) { // resolve.c: the spill span's reach
+            float b = e.kind == TV_ENTRY_BEGIN ? e.depth : ent[iv_back[e.interval]].depth;
+            float f = e.kind == TV_ENTRY_BEGIN ? hide_end_fp : iv_end_fp[e.interval];
+            if (prefix == 0)
+                open = reach = b;
+            if (b <= reach && reach < f)
+                reach = f;
+        }
         prefix += e.delta;
         if (prefix == 0 && e.delta < 0) {
-            span_lo = open;
+            span_lo = spill_lo = open;
             span_hi = e.depth;
+            spill_hi = min(e.depth, reach);
         }
         bool in_valid = e.interval >= 0 && iv_valid[e.interval];
         if (is_candidate(e)) { // touches the pixel only: output unless hidden, never an occluder
@@ -347,8 +359,9 @@ bool walk(uint m)
             if (e.kind == TV_ENTRY_BACK || e.interval < 0)
                 continue;
             term_depth = e.depth;
-            hide_begin = open;
+            hide_begin = spill_lo = open;
             hide_end = e.depth;
+            spill_hi = min(e.depth, reach);
             return true;
         }
         if (e.kind == TV_ENTRY_FRONT && e.interval < 0)
@@ -390,7 +403,8 @@ void carry_range(uint n)
             return;
     }
     float lo = uintBitsToFloat(0x7F800000u), hi = uintBitsToFloat(0xFF800000u);
-    if (hide_begin < hide_end && hide_begin <= tail && tail < hide_end) {
+    bool carried = hide_begin < hide_end && hide_begin <= tail && tail < hide_end;
+    if (carried) {
         lo = hide_begin;
         hi = hide_end;
     }
@@ -401,8 +415,16 @@ void carry_range(uint n)
             hi = max(iv_end[v], hi);
         }
     }
+    float reach = carried && hide_begin <= lo ? max(lo, hide_end_fp) : lo; // resolve.c: the footprints' end
+    for (uint v = 0u; v < iv_count; v++) {
+        float b = ent[iv_first[v]].depth;
+        if (iv_valid[v] && b <= tail && tail < iv_end[v] && b <= reach)
+            reach = max(reach, iv_end_fp[v]);
+    }
+    float end = lo < hi ? pvs_umbra_pack(hi, min(reach, hi)) : 0.0;
     hide_begin = lo < hi ? lo : 0.0;
-    hide_end = lo < hi ? hi : 0.0;
+    hide_end = pvs_umbra_centre(end);
+    hide_end_fp = pvs_umbra_footprint(end);
 }
 
 bool carry_run(uint n)
@@ -421,11 +443,11 @@ bool carry_run(uint n)
         return false; // resolve.c's stand-in for lost trims
     uint run_entries = carry_next_count;
     for (uint i = 0u; i < run_entries; i++) {
-        float u = 0.0;
+        float u = 0.0, f = 0.0;
         bool first = (carry_next[i].kind & TV_CARRY_KIND) == TV_ENTRY_TRIM; // the region's first entry
         for (uint j = 0u; first && j < i; j++)
             first = carry_next[j].id != carry_next[i].id || (carry_next[j].kind & TV_CARRY_KIND) != TV_ENTRY_TRIM;
-        if (first && umbra_depth(carry_next[i].id, u) && !carry_add(TV_ENTRY_UMBRA, u, carry_next[i].id))
+        if (first && umbra_depth(carry_next[i].id, u, f) && !carry_add(TV_ENTRY_UMBRA, pvs_umbra_pack(u, f), carry_next[i].id))
             return false;
     }
     for (uint i = 0u; i < carry_next_count; i++)
@@ -490,22 +512,19 @@ bool resolve_end(uint n, uint m)
                 output_id(ent[i].id);
         stencil = TV_STENCIL_OVERFLOW;
         carry_count = 0u;
-        hide_begin = hide_end = 0.0;
+        hide_begin = hide_end = spill_lo = spill_hi = 0.0;
         return true;
     }
     return false;
 }
 
-// Fragments P2 had no room for (pvs_spill_output of resolve.h): the exact
-// spill draw outputs every front of an overflowed pixel that lost a front;
-// the dilated one the candidates nearer than the bound left in
-// lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE]: all of them at an overflowed or open pixel, those in
-// front of the terminator at a pixel sealed now, none otherwise. Both draw
-// only the spill list (the fronts that lost a fragment somewhere in the
-// layer), so the stored candidates the dilated draw would also find here
-// (those of triangles that lost nothing) are output now: the ids are those
-// of a draw of every front, per pixel and so under any tiling. The stored
-// fronts of an overflowed pixel, resolve_overflow has output.
+// Fragments P2 had no room for (pvs_spill_output of resolve.h): the exact spill draw outputs every front of an
+// overflowed pixel that lost a front; the dilated one the candidates nearer than the bound left in
+// lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE]: all of them at an overflowed or open pixel, those in front of
+// the terminator at a pixel sealed now, none otherwise, none inside the spill span (pvs_spill_hidden). Both draw only
+// the spill list (the fronts that lost a fragment somewhere in the layer), so the stored candidates the dilated draw
+// would also find here (those of triangles that lost nothing) are output now: the ids are those of a draw of every
+// front, per pixel and so under any tiling. The stored fronts of an overflowed pixel, resolve_overflow has output.
 void request_spill()
 {
     const float inf = uintBitsToFloat(0x7F800000u);
@@ -516,11 +535,13 @@ void request_spill()
     lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_CANDIDATE] = candidates ? floatBitsToUint(bound) : 0u;
     if (!candidates)
         return;
+    lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_SPAN_LO] = floatBitsToUint(spill_lo);
+    lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_SPAN_HI] = floatBitsToUint(spill_hi);
     counters[TV_PVS_C_DRAW_SPILL_WIDE] = 3u * spill_list[0];
     out_reason = TV_REASON_OVERFLOW; // what the dilated spill draw would have output
     uvec2 e;
     for (kb_cursor c = kb_open(0u); kb_next(c, e);) {
-        if ((e.y & TV_ID_CANDIDATE) != 0u && kdepth(e.x) < bound)
+        if ((e.y & TV_ID_CANDIDATE) != 0u && kdepth(e.x) < bound && !(spill_lo < kdepth(e.x) && kdepth(e.x) < spill_hi))
             output_id(e.y);
     }
     out_reason = TV_REASON_FRONT;
@@ -534,7 +555,8 @@ void load_pixel(uint pixel)
     stencil = st.x;
     carry_count = stencil == TV_STENCIL_SEALED ? 0u : st.y;
     hide_begin = uintBitsToFloat(st.z);
-    hide_end = uintBitsToFloat(st.w);
+    hide_end = stencil == TV_STENCIL_TRIMMED ? pvs_umbra_centre(uintBitsToFloat(st.w)) : uintBitsToFloat(st.w);
+    hide_end_fp = pvs_umbra_footprint(uintBitsToFloat(st.w));
     for (uint c = 0u; c < carry_count; c++) {
         uvec4 e = carry_buf[P * TV_K_CARRY + c];
         carry[c] = carry_entry(uintBitsToFloat(e.x), e.y, e.z, uintBitsToFloat(e.w));
@@ -542,6 +564,7 @@ void load_pixel(uint pixel)
     n_out = 0u;
     out_reason = TV_REASON_FRONT;
     term_depth = stencil == TV_STENCIL_SEALED ? uintBitsToFloat(st.y) : 0.0;
+    spill_lo = spill_hi = 0.0; // set by the walk only
     overflow_due = false;
 }
 
@@ -555,7 +578,8 @@ void finish_pixel(uint seq_len, bool handled)
     if (cnt.x > view.k)
         request_spill();
     pixstate[P] = uvec4(stencil, stencil == TV_STENCIL_SEALED ? floatBitsToUint(term_depth) : carry_count,
-                        floatBitsToUint(hide_begin), floatBitsToUint(hide_end));
+                        floatBitsToUint(hide_begin),
+                        floatBitsToUint(stencil == TV_STENCIL_TRIMMED ? pvs_umbra_pack(hide_end, hide_end_fp) : hide_end));
     for (uint c = 0u; c < carry_count; c++)
         carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id,
                                               floatBitsToUint(carry[c].second));

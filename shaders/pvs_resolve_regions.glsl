@@ -14,7 +14,7 @@
 uint rg_n;
 uint rg_id[RG_MAX], rg_count[RG_MAX]; // fragments in front of trims_lost
 float rg_mn[RG_MAX], rg_mx[RG_MAX];
-float rg_umbra[RG_MAX]; // umbra_depth's answer, +inf: none
+float rg_umbra[RG_MAX], rg_umbra_fp[RG_MAX]; // umbra_depth's answers, +inf: none
 
 // The regions of the trims of ent[0, n) in front of trims_lost (set first).
 void regions_build(uint n)
@@ -39,8 +39,9 @@ void regions_build(uint n)
         rg_count[r]++;
     }
     for (uint r = 0u; r < rg_n; r++) {
-        float u = inf;
-        rg_umbra[r] = umbra_depth(rg_id[r], u) ? u : inf;
+        float u = inf, f = inf;
+        rg_umbra[r] = umbra_depth(rg_id[r], u, f) ? u : inf;
+        rg_umbra_fp[r] = f;
     }
 }
 

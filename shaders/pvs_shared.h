@@ -252,7 +252,9 @@
 #define TV_PVS_LOST_FRONT     0u // slots of a pixel's TV_PVS_BIND_LOST entry: what the layer's k-buffer had no room for (P2, atomicMin)
 #define TV_PVS_LOST_CANDIDATE 1u
 #define TV_PVS_LOST_TRIM      2u
-#define TV_PVS_LOST_STRIDE    3u
+#define TV_PVS_LOST_SPAN_LO   TV_PVS_LOST_TRIM // after P3 read it: the spill span (pvs_spill_hidden), for the dilated spill draw
+#define TV_PVS_LOST_SPAN_HI   3u
+#define TV_PVS_LOST_STRIDE    4u
 #define TV_PVS_BIND_COOP_LIST  22 // P3: pixels whose sequence the cooperative pass sorts (pvs_resolve_group.comp)
 #define TV_PVS_BIND_PROXIES    23 // vec4 min, vec4 max per proxy of the request (pvs_compute_dynamic); P1, P2 pull their box faces
 #define TV_PVS_BIND_SPILL      24 // uint: the spill list's length, then interleaved: its entries (the layer's fronts that lost a fragment in P2, drawn by the spill draws) and a layer stamp per drawn id

@@ -175,9 +175,12 @@ static uint32_t make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         st->carry[st->carry_count++] = (pvs_entry){d, kind | flags[packed], id, second};
         d += 0.1f * (float)rnd_u(2);
     }
-    if (rnd_u(3) == 0) {
+    if (rnd_u(3) == 0) { /* its footprints' end as carry_range leaves it: rounded, anywhere in the range */
         st->hide_begin = rnd_depth();
-        st->hide_end = st->hide_begin + 0.1f * (float)(1 + rnd_u(3));
+        float end = st->hide_begin + 0.1f * (float)(1 + rnd_u(3));
+        end = pvs_umbra_pack(end, st->hide_begin + (end - st->hide_begin) * 0.25f * (float)rnd_u(5));
+        st->hide_end = pvs_umbra_centre(end);
+        st->hide_end_fp = pvs_umbra_footprint(end);
     }
     return umbrae;
 }
@@ -187,6 +190,12 @@ static uint32_t fbits(float f)
     uint32_t u;
     memcpy(&u, &f, sizeof u);
     return u;
+}
+
+/* The last word of a pixel's state (TV_PVS_BIND_PIXSTATE): while trimmed, hide_end packed with hide_end_fp. */
+static uint32_t state_w(const pvs_pixel_state* st)
+{
+    return fbits(st->stencil == TV_STENCIL_TRIMMED ? pvs_umbra_pack(st->hide_end, st->hide_end_fp) : st->hide_end);
 }
 
 /* Host-visible copies of the buffers this test writes or reads. */
@@ -228,7 +237,7 @@ static void upload(pvs_context* ctx, const case_data* c)
         uint32_t counts[4] = {kb->front_count, kb->back_count, kb->trim_count, 0};
         memcpy(cnt + 4 * p, counts, sizeof counts);
         uint32_t state[4] = {st->stencil, st->stencil == TV_STENCIL_SEALED ? fbits(st->term_depth) : st->carry_count,
-                             fbits(st->hide_begin), fbits(st->hide_end)};
+                             fbits(st->hide_begin), state_w(st)};
         memcpy(ps + 4 * p, state, sizeof state);
         for (uint32_t i = 0; i < st->carry_count; i++) {
             uint32_t e[4] = {fbits(st->carry[i].depth), st->carry[i].kind, st->carry[i].id, fbits(st->carry[i].second)};
@@ -291,6 +300,7 @@ static uint32_t compare(pvs_context* ctx, case_data* c)
     const uint32_t* flags = ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped;
     const uint32_t* ps = ctx->buffers[TV_PVS_BIND_PIXSTATE].mapped;
     const uint32_t* carry = ctx->buffers[TV_PVS_BIND_CARRY].mapped;
+    const uint32_t* lost = ctx->buffers[TV_PVS_BIND_LOST].mapped;
     uint32_t bad = 0;
     for (uint32_t p = 0; p < PIXELS; p++) {
         uint32_t out[PVS_RESOLVE_MAX_OUTPUT], want = 0, got = 0;
@@ -306,7 +316,11 @@ static uint32_t compare(pvs_context* ctx, case_data* c)
         bool same = want == got && ps[4 * p] == st->stencil &&
                     ps[4 * p + 1] == (sealed ? fbits(st->term_depth) : st->carry_count);
         if (same && st->hide_begin < st->hide_end)
-            same = ps[4 * p + 2] == fbits(st->hide_begin) && ps[4 * p + 3] == fbits(st->hide_end);
+            same = ps[4 * p + 2] == fbits(st->hide_begin) && ps[4 * p + 3] == state_w(st);
+        /* where P3 requested the dilated spill draw (its bound left in the candidate slot), the spill span */
+        const uint32_t* l = lost + TV_PVS_LOST_STRIDE * p;
+        if (same && c->kbuf[p].front_count > K && st->stencil != TV_STENCIL_UNTRIMMED && l[TV_PVS_LOST_CANDIDATE])
+            same = l[TV_PVS_LOST_SPAN_LO] == fbits(st->spill_lo) && l[TV_PVS_LOST_SPAN_HI] == fbits(st->spill_hi);
         for (uint32_t i = 0; same && !sealed && i < st->carry_count; i++) {
             const uint32_t* e = carry + 4 * (p * TV_K_CARRY + i);
             same = e[0] == fbits(st->carry[i].depth) && e[1] == st->carry[i].kind && e[2] == st->carry[i].id &&

@@ -70,14 +70,88 @@ static void test_overflow_behind_terminator(void)
         items[n++] = (item)C(2.0f + (float)i, 100 + i);
     pvs_pixel_state t = {0};
     r = run_layer(&t, items, n);
-    TV_CHECK(r.overflowed && r.spilled_count == 5 && r.spill_out == 5); /* the pixel stays open */
-    /* The stored candidates lie in the umbra, but the list lost a candidate:
-     * they are output as the lost ones are (resolve.h, pvs_resolve_pixel). */
-    uint32_t want[TV_K_FRONT] = {1};
-    for (uint32_t i = 1; i < TV_K_FRONT; i++)
-        want[i] = 100 + i - 1;
-    TV_CHECK(same_set(&r, want, TV_K_FRONT));
-    TV_CHECK(t.stencil == TV_STENCIL_TRIMMED);
+    /* The pixel stays open; every candidate, stored or lost, lies in the
+     * umbra, the walk's spill span (1.5, 1000): none is output. */
+    TV_CHECK(r.overflowed && r.spilled_count == 5 && r.spill_out == 0);
+    CHECK_OUT(r, 1);
+    TV_CHECK(t.stencil == TV_STENCIL_TRIMMED && t.spill_lo == 1.5f && t.spill_hi == 1000.0f);
+}
+
+/* Lost candidates at an open pixel: those strictly inside the walk's last
+ * hidden span (an umbra, from the back of the interval it validates) are
+ * hidden as the stored ones are; those in front of it, behind it or in a
+ * validated interval's run are output, whether stored or lost, so the ids do
+ * not depend on which found room. */
+static void test_lost_candidates_in_span(void)
+{
+    item items[TV_K_FRONT + 8];
+    uint32_t n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)C(1.1f, 300); /* in the validated run: eroded surface */
+    items[n++] = (item)T(1.2f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)U(5.0f, 1);
+    items[n++] = (item)C(1.5f, 301); /* at the span's start: not inside */
+    for (uint32_t i = 0; i < TV_K_FRONT / 2; i++) {
+        items[n++] = (item)C(2.0f + 0.15f * (float)i, 100 + i); /* hidden */
+        items[n++] = (item)C(6.0f + (float)i, 200 + i);         /* behind the umbra */
+    }
+    items[n++] = (item)C(5.0f, 302); /* at the umbra: not hidden */
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, n);
+    /* lost: 214, 115 (hidden), 215, 302 */
+    TV_CHECK(r.overflowed && r.spilled_count == 4 && r.spill_out == 3 && s.stencil == TV_STENCIL_TRIMMED);
+    TV_CHECK(s.spill_lo == 1.5f && s.spill_hi == 5.0f);
+    /* bits: 100-115 -> 0-15, 200-215 -> 16-31, 300-302 -> 32-34, 1 -> 35 */
+    uint64_t hidden = 0, shown = 0;
+    for (uint32_t i = 0; i < r.count + r.spill_out; i++) {
+        uint32_t id = i < r.count ? r.out[i] : r.spill_ids[i - r.count];
+        if (id >= 100 && id < 100 + TV_K_FRONT / 2)
+            hidden |= 1ull << (id - 100);
+        else if (id == 1 || id >= 200)
+            shown |= 1ull << (id == 1 ? 35 : id >= 300 ? id - 300 + 32 : id - 200 + 16);
+    }
+    TV_CHECK(hidden == 0);
+    TV_CHECK(shown == (1ull << 36) - (1ull << 16));
+}
+
+/* The spill span ends at the umbrae's footprint (pvs_umbra_pack), not where
+ * the centre's ray leaves them: a lost candidate between the two may be seen
+ * past the umbra through the pixel's edge, so it is output, and the stored
+ * ones there with it (ids must not depend on which found room); those in
+ * front of the footprint are hidden, stored or lost. Where nothing is lost
+ * the walk still hides up to the centre's umbra. */
+static void test_spill_span_ends_at_footprint(void)
+{
+    float umbra = pvs_umbra_pack(5.0f, 3.0f), fp = pvs_umbra_footprint(umbra);
+    TV_CHECK(pvs_umbra_centre(umbra) == 5.0f && fp <= 3.0f && fp > 2.98f);
+    item items[4 + 2 * 18];
+    uint32_t n = 0;
+    items[n++] = (item)F(1.0f, 1);
+    items[n++] = (item)T(1.2f, 1);
+    items[n++] = (item)B(1.5f);
+    items[n++] = (item)U(umbra, 1);
+    for (uint32_t i = 0; i < 18; i++) {
+        items[n++] = (item)C(1.6f + 0.07f * (float)i, 100 + i); /* in front of the footprint */
+        items[n++] = (item)C(3.1f + 0.1f * (float)i, 200 + i);  /* behind it, in front of the centre's umbra */
+    }
+    pvs_pixel_state s = {0};
+    layer_result r = run_layer(&s, items, 4 + 2 * 10); /* nothing lost */
+    TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_TRIMMED);
+    CHECK_OUT(r, 1);
+    pvs_pixel_state t = {0};
+    r = run_layer(&t, items, n); /* 5 candidates lost */
+    TV_CHECK(r.overflowed && r.spilled_count == 5 && t.stencil == TV_STENCIL_TRIMMED);
+    TV_CHECK(t.spill_lo == 1.5f && t.spill_hi == fp);
+    uint64_t hidden = 0, shown = 0;
+    for (uint32_t i = 0; i < r.count + r.spill_out; i++) {
+        uint32_t id = i < r.count ? r.out[i] : r.spill_ids[i - r.count];
+        if (id >= 100 && id < 118)
+            hidden |= 1ull << (id - 100);
+        else if (id >= 200 && id < 218)
+            shown |= 1ull << (id - 200);
+    }
+    TV_CHECK(hidden == 0 && shown == (1ull << 18) - 1);
 }
 
 /* An umbra is stored in its region's entry (TV_PVS_REGION_SLOTS), so it no
@@ -470,6 +544,8 @@ int main(void)
 {
     TV_TEST_RUN(test_overflow_keeps_every_front);
     TV_TEST_RUN(test_overflow_behind_terminator);
+    TV_TEST_RUN(test_lost_candidates_in_span);
+    TV_TEST_RUN(test_spill_span_ends_at_footprint);
     TV_TEST_RUN(test_overflow_umbra_list);
     TV_TEST_RUN(test_deep_pixel_without_umbrae);
     TV_TEST_RUN(test_deep_pixel_drops_carried_range);
