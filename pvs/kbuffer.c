@@ -228,7 +228,7 @@ void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages)
 bool pvs_kbuf_deep(const pvs_kbuf* k)
 {
     uint32_t e = k->k_exact;
-    bool longer = k->front_count > e || k->back_count > e || k->trim_count > e;
+    bool longer = k->front_count > e || k->back_count > e; /* a long region list alone: resolve.h */
     bool fit = k->front_count <= TV_K_FRONT && k->back_count <= TV_K_BACK && k->trim_count <= TV_K_TRIM;
     return e && longer && fit;
 }

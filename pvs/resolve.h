@@ -129,8 +129,12 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth
  * uncounted where the list is full: the GPU stores no umbra without trims). */
 bool pvs_kbuf_push_region(pvs_kbuf* kbuf, pvs_kpages* pages, float trim, float second, float umbra, uint32_t id);
 
-/* A deep pixel: k_exact set, a list longer than it, none past its capacity
- * (docs/trim-regions.md, "Overflow policy"). */
+/* A deep pixel: k_exact set, a front or back list longer than it, none past
+ * its capacity (docs/trim-regions.md, "Overflow policy"). Its umbrae count
+ * for nothing, as they end where the centre ray leaves them and some of its
+ * many faces lie nearer the edge; a region list longer than k_exact alone
+ * does not make a pixel deep: its faces are as few as a shallow pixel's,
+ * and it keeps its umbrae (docs/journal/2026-12-03-regovf.md). */
 bool pvs_kbuf_deep(const pvs_kbuf* kbuf);
 
 /* Gathers the pixel's entries from the pages into kbuf's arrays, as P3 reads

@@ -140,8 +140,9 @@ void resolve_overflow()
     hide_begin = hide_end = 0.0;
 }
 
-// pvs_kbuf_deep: its umbrae count for nothing (resolve.c says why)
-bool deep_pixel() { return any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))); }
+// pvs_kbuf_deep: its umbrae count for nothing (resolve.c says why); a long
+// region list alone does not make a pixel deep (resolve.h)
+bool deep_pixel() { return any(greaterThan(cnt.xy, uvec2(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))); }
 
 bool umbra_depth(uint region, inout float depth)
 {
