@@ -23,6 +23,7 @@ void tv_loop_args(tv_loop_opts* o, tv_arg rows[TV_LOOP_ARG_COUNT])
         TV_ARG_PVS_RES("pvs-res", o->pvs_res),
         TV_ARG_K(&o->k),
         TV_ARG_K_DEEP(&o->k_deep),
+        TV_ARG_K_REGIONS(&o->k_regions),
         TV_ARG_KBUFFER_LAYOUT(&o->kb_layout),
         TV_ARG_SAMPLES(&o->samples),
     };
@@ -33,6 +34,7 @@ bool tv_loop_validate(const tv_loop_opts* o)
 {
     return tv_arg_kbuffer_layout(o->kb_layout) >= 0 && tv_arg_require("k", o->k, o->k >= 1, ">= 1") &&
            tv_arg_require("k-deep", o->k_deep, o->k_deep >= 0, ">= 0") &&
+           tv_arg_require("k-regions", o->k_regions, o->k_regions >= 0, ">= 0") &&
            tv_arg_require("samples", o->samples, o->samples >= 1, ">= 1") &&
            tv_arg_require("fov", o->fov, o->fov > 1.0f && o->fov < 170.0f, "in (1, 170) degrees") &&
            tv_arg_require("ipd", o->ipd, o->ipd >= 0.0f && o->ipd <= 1.0f, "in [0, 1] m") &&
@@ -67,6 +69,7 @@ bool tv_loop_fill(const tv_loop_opts* o, float aspect, pvs_method_desc* method, 
     method->tr.height = o->pvs_res[1] ? o->pvs_res[1] : 512;
     method->tr.k = (uint32_t)o->k;
     method->tr.k_deep = (uint32_t)o->k_deep;
+    method->tr.k_regions = (uint32_t)o->k_regions;
     method->tr.kbuffer_layout = (pvs_kbuffer_layout)tv_arg_kbuffer_layout(o->kb_layout);
     method->gt_samples = (uint32_t)o->samples;
     viewcell->policy = strcmp(o->policy, "fixed") == 0 ? PRED_POLICY_FIXED : PRED_POLICY_ADAPTIVE;

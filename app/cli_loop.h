@@ -15,7 +15,7 @@ typedef struct tv_loop_opts {
     const char *method, *predictor, *policy, *kb_layout;
     unsigned pvs_res[2]; /* 0x0: 512x512 */
     float fov, ipd, delta, fov_pvs, quantile, head_acc, head_ang_acc, latency_ms;
-    int k, k_deep, samples;
+    int k, k_deep, k_regions, samples;
 } tv_loop_opts;
 
 #define TV_LOOP_OPTS_DEFAULT                                                                                     \
@@ -23,7 +23,7 @@ typedef struct tv_loop_opts {
      .quantile = 0.99f, .latency_ms = 50.0f, .k = TV_ARGS_DEFAULT_K, .samples = TV_ARGS_DEFAULT_SAMPLES}
 
 /* The rows of those options, written to rows[0..TV_LOOP_ARG_COUNT). */
-#define TV_LOOP_ARG_COUNT 16
+#define TV_LOOP_ARG_COUNT 17
 void tv_loop_args(tv_loop_opts* o, tv_arg rows[TV_LOOP_ARG_COUNT]);
 
 /* False after a one-line error naming the first option out of range. */

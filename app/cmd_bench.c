@@ -33,7 +33,7 @@
 typedef struct bench_opts {
     const char *scenes, *deltas, *methods, *pos, *out, *shard, *gt_cache, *kb_layout;
     float dir[3], fov, fov_pvs;
-    int every, max_cells, cells_per_job, samples, k, k_deep, max_layers;
+    int every, max_cells, cells_per_job, samples, k, k_deep, k_regions, max_layers;
     unsigned res[2], pvs_res[2];
     bool jobs;
 } bench_opts;
@@ -207,7 +207,7 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
     char err[512], json[4200];
     tv_eval_pvs_json_of(spec, json, sizeof json);
     pvs_method_desc md = {.kind = kind, .tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k,
-                                                   .k_deep = (uint32_t)o->k_deep, .kbuffer_layout = (pvs_kbuffer_layout)tv_arg_kbuffer_layout(o->kb_layout),
+                                                   .k_deep = (uint32_t)o->k_deep, .k_regions = (uint32_t)o->k_regions, .kbuffer_layout = (pvs_kbuffer_layout)tv_arg_kbuffer_layout(o->kb_layout),
                                                    .max_layers = tv_arg_max_layers(o->max_layers)},
                           .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples,
                           .q3vis_file = kind == PVS_METHOD_Q3VIS ? json : NULL};
@@ -344,9 +344,9 @@ static void settings_of(const bench_opts* o, char* buf, size_t size)
 {
     snprintf(buf, size,
              "scenes=%s;deltas=%s;methods=%s;path-every=%d;max-cells=%d;cells-per-job=%d;pos=%s;dir=%.9g,%.9g,%.9g;"
-             "samples=%d;res=%ux%u;pvs-res=%ux%u;k=%d;k-deep=%d;kbuffer-layout=%s;max-layers=%d;fov=%.9g;fov-pvs=%.9g",
+             "samples=%d;res=%ux%u;pvs-res=%ux%u;k=%d;k-deep=%d;k-regions=%d;kbuffer-layout=%s;max-layers=%d;fov=%.9g;fov-pvs=%.9g",
              o->scenes, o->deltas, o->methods, o->every, o->max_cells, o->cells_per_job, o->pos ? o->pos : "", o->dir[0], o->dir[1],
-             o->dir[2], o->samples, o->res[0], o->res[1], o->pvs_res[0], o->pvs_res[1], o->k, o->k_deep,
+             o->dir[2], o->samples, o->res[0], o->res[1], o->pvs_res[0], o->pvs_res[1], o->k, o->k_deep, o->k_regions,
              o->kb_layout ? o->kb_layout : "default", o->max_layers, o->fov,
              o->fov_pvs);
 }
@@ -426,6 +426,7 @@ int tv_cmd_bench(int argc, char** argv)
         {"pvs-res", TV_ARG_RES, o.pvs_res, "WxH", "tr resolution and full-render timing (default 512x512)"},
         TV_ARG_K(&o.k),
         TV_ARG_K_DEEP(&o.k_deep),
+        TV_ARG_K_REGIONS(&o.k_regions),
         TV_ARG_KBUFFER_LAYOUT(&o.kb_layout),
         TV_ARG_MAX_LAYERS(&o.max_layers),
         {"fov", TV_ARG_FLOAT, &o.fov, "DEG", "display FOV, horizontal (default 60)"},
@@ -451,6 +452,7 @@ int tv_cmd_bench(int argc, char** argv)
     bench_run b = {.o = &o, .t0 = tv_now_ms()};
     if (!parse_lists(&o, &b) || tv_arg_kbuffer_layout(o.kb_layout) < 0 || !tv_arg_require("k", o.k, o.k >= 1, ">= 1") ||
         !tv_arg_require("k-deep", o.k_deep, o.k_deep >= 0, ">= 0") ||
+        !tv_arg_require("k-regions", o.k_regions, o.k_regions >= 0, ">= 0") ||
         !tv_arg_require("max-layers", o.max_layers, o.max_layers >= -1, ">= -1") || !tv_arg_gt_cache(o.gt_cache))
         return 2;
     float dir_len = sqrtf(o.dir[0] * o.dir[0] + o.dir[1] * o.dir[1] + o.dir[2] * o.dir[2]);

@@ -22,7 +22,7 @@ typedef struct eval_opts {
     const char *scene, *path, *out, *method, *gt_cache, *kb_layout;
     float pos[3], dir[3], up[3];
     float delta, fov, fov_pvs;
-    int every, samples, k, k_deep, max_cells, max_layers;
+    int every, samples, k, k_deep, k_regions, max_cells, max_layers;
     unsigned res[2], pvs_res[2];
     bool explain;
 } eval_opts;
@@ -107,6 +107,7 @@ static tv_args_result parse(eval_opts* o, int argc, char** argv)
         TV_ARG_PVS_RES("pvs-res", o->pvs_res),
         TV_ARG_K(&o->k),
         TV_ARG_K_DEEP(&o->k_deep),
+        TV_ARG_K_REGIONS(&o->k_regions),
         TV_ARG_KBUFFER_LAYOUT(&o->kb_layout),
         TV_ARG_MAX_LAYERS(&o->max_layers),
         TV_ARG_METHOD(&o->method),
@@ -128,12 +129,13 @@ static bool validate(const eval_opts* o, pvs_method_desc* md)
 {
     int layout = tv_arg_kbuffer_layout(o->kb_layout);
     *md = (pvs_method_desc){.tr = {.width = o->pvs_res[0], .height = o->pvs_res[1], .k = (uint32_t)o->k,
-                                   .k_deep = (uint32_t)o->k_deep, .kbuffer_layout = (pvs_kbuffer_layout)layout,
+                                   .k_deep = (uint32_t)o->k_deep, .k_regions = (uint32_t)o->k_regions, .kbuffer_layout = (pvs_kbuffer_layout)layout,
                                    .max_layers = tv_arg_max_layers(o->max_layers),
                                    .explain = o->explain},
                             .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples};
     if (layout < 0 || !tv_arg_require("k", o->k, o->k >= 1, ">= 1") ||
         !tv_arg_require("k-deep", o->k_deep, o->k_deep >= 0, ">= 0") ||
+        !tv_arg_require("k-regions", o->k_regions, o->k_regions >= 0, ">= 0") ||
         !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1") ||
         !tv_arg_viewcell(o->delta, o->fov, o->fov_pvs) || !tv_arg_gt_cache(o->gt_cache))
         return false;

@@ -79,7 +79,7 @@ int tv_cmd_pvs(int argc, char** argv)
     float delta = 0.1f, fov = 60.0f, fov_pvs = 90.0f;
     unsigned res[2] = {0, 0};
     int k = TV_ARGS_DEFAULT_K, coop_min = 0, tile_pixels = 0, max_layers = TV_ARGS_DEFAULT_MAX_LAYERS, pages = 0;
-    int repeat = 1, k_deep = 0;
+    int repeat = 1, k_deep = 0, k_regions = 0;
     const tv_arg args[] = {
         {"scene", TV_ARG_STRING, &scene, "S", "scene (required)"},
         {"pos", TV_ARG_VEC3, pos, "X,Y,Z", "viewcell centre v0 (required)"},
@@ -92,6 +92,7 @@ int tv_cmd_pvs(int argc, char** argv)
         {"res", TV_ARG_RES, res, "WxH", "PVS resolution (default 512x512)"},
         TV_ARG_K(&k),
         TV_ARG_K_DEEP(&k_deep),
+        TV_ARG_K_REGIONS(&k_regions),
         TV_ARG_KBUFFER_LAYOUT(&layout),
         TV_ARG_MAX_LAYERS(&max_layers),
         {"coop-min", TV_ARG_INT, &coop_min, "N",
@@ -113,13 +114,14 @@ int tv_cmd_pvs(int argc, char** argv)
     /* tr's frustum is square (the viewcell's PVS FOV on both axes): a square image by default */
     int kb_layout = tv_arg_kbuffer_layout(layout);
     pvs_method_desc md = {.tr = {.width = res[0] ? res[0] : 512, .height = res[1] ? res[1] : 512, .k = (uint32_t)k,
-                                 .k_deep = (uint32_t)k_deep, .kbuffer_layout = (pvs_kbuffer_layout)kb_layout,
+                                 .k_deep = (uint32_t)k_deep, .k_regions = (uint32_t)k_regions, .kbuffer_layout = (pvs_kbuffer_layout)kb_layout,
                                  .coop_sort_min = (uint32_t)coop_min, .max_tile_pixels = (uint32_t)tile_pixels,
                                  .kbuffer_pages = (uint32_t)pages,
                                  .max_layers = tv_arg_max_layers(max_layers)},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
     if (kb_layout < 0 || !tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("k-deep", k_deep, k_deep >= 0, ">= 0") ||
+        !tv_arg_require("k-regions", k_regions, k_regions >= 0, ">= 0") ||
         !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
         !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0") ||
         !tv_arg_require("kbuffer-pages", pages, pages >= 0, ">= 0") ||

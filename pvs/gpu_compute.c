@@ -100,7 +100,9 @@ static void write_view(pvs_context* ctx, const pvs_viewcell* vc, const rnd_camer
                       .triangle_count = ctx->triangle_count,
                       .explain = ctx->explain,
                       .list_capacity = ctx->list_capacity,
-                      .k_exact = ctx->k};
+                      .k_exact = ctx->k,
+                      .k_lists = ctx->k_lists,
+                      .k_regions = ctx->k_regions};
     rnd_camera_view_proj(cam, v->aspect, g.view_proj);
     for (int i = 0; i < 3; i++) {
         g.apex[i] = v->apex[i];

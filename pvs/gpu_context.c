@@ -428,6 +428,7 @@ static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
 static bool check_desc(const pvs_desc* d, char* err, size_t err_size)
 {
     uint32_t k_max = d->k > d->k_deep ? d->k : d->k_deep;
+    k_max = k_max > d->k_regions ? k_max : d->k_regions;
     if (k_max > TV_K_FRONT || k_max > TV_K_BACK || k_max > TV_K_TRIM || k_max > TV_K_UMBRA) {
         snprintf(err, err_size, "pvs: k = %u exceeds the shader capacity TV_K_* = %u", k_max, TV_K_FRONT);
         return false;
@@ -494,7 +495,9 @@ pvs_context* pvs_create(rnd_context* rnd, const scn_scene* scene, const rnd_gpu_
     pvs_kbuffer_layout layout = d.kbuffer_layout ? d.kbuffer_layout : cpu ? PVS_KBUFFER_FLAT : PVS_KBUFFER_PAGED;
     assert(layout == PVS_KBUFFER_FLAT || layout == PVS_KBUFFER_PAGED);
     ctx->kb_paged = layout == PVS_KBUFFER_PAGED;
-    ctx->k_store = d.k_deep > ctx->k ? d.k_deep : ctx->k;
+    ctx->k_lists = d.k_deep > ctx->k ? d.k_deep : ctx->k;
+    ctx->k_regions = d.k_regions > ctx->k_lists ? d.k_regions : ctx->k_lists;
+    ctx->k_store = ctx->k_regions;
     ctx->grid = tile_grid(ctx, d.max_tile_pixels);
     size_pool(ctx, &d);
     ctx->explain = d.explain;

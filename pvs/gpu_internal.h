@@ -27,12 +27,13 @@ typedef struct pvs_view_gpu {
     uint32_t tile_x, tile_y, tile_w, tile_h; /* rewritten per tile by the command buffer */
     uint32_t explain, kb_holes;             /* pvs_desc.explain; kb_holes: pvs_pool_regrow */
     uint32_t list_capacity, k_exact;        /* TV_PVS_BIND_ORDER's cap: pvs_context.list_capacity; k_exact: pvs_context.k */
+    uint32_t k_lists, k_regions, pad[2];    /* pvs_context.k_lists, k_regions */
 } pvs_view_gpu;
 _Static_assert(offsetof(pvs_view_gpu, apex) == 64 && offsetof(pvs_view_gpu, up) == 112 &&
                    offsetof(pvs_view_gpu, tan_half_x) == 128 && offsetof(pvs_view_gpu, near_dist) == 144 &&
                    offsetof(pvs_view_gpu, width) == 160 &&
                    offsetof(pvs_view_gpu, tile_x) == 176 && offsetof(pvs_view_gpu, explain) == 192 &&
-                   sizeof(pvs_view_gpu) == 208,
+                   sizeof(pvs_view_gpu) == 224,
                "pvs_view_gpu must match pvs_view_buf's std430 layout in pvs_common.glsl");
 
 /* Push constants of every PVS pipeline (mirrors pvs_common.glsl). */
@@ -54,7 +55,9 @@ struct pvs_context {
     rnd_context* rnd;
     const rnd_gpu_scene* gpu;
     uint32_t width, height, k;
-    uint32_t k_store;        /* slots each list stores: pvs_desc.k_deep, at least k */
+    uint32_t k_store;        /* slots each list has room for: the largest of k, k_deep, k_regions */
+    uint32_t k_lists;        /* entries the front and back lists hold: pvs_desc.k_deep, at least k */
+    uint32_t k_regions;      /* entries the region list holds: pvs_desc.k_regions, at least k_lists */
     pvs_tile_grid grid;     /* the per-pixel buffers hold one tile */
     uint32_t kb_paged;       /* pvs_desc.kbuffer_layout is PVS_KBUFFER_PAGED (a specialisation constant) */
     uint32_t pool_pages;     /* k-buffer pages the pool holds (pvs_reserve_pool) ... */

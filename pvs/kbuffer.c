@@ -141,7 +141,8 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth
     uint32_t s;
     switch (kind) {
     case TV_ENTRY_FRONT:
-        if (!claim(&kbuf->front_count, TV_K_FRONT, &s) || !store(kbuf, pages, 0, &kbuf->front_count, s, depth, id)) {
+        if (!claim(&kbuf->front_count, pvs_kbuf_capacity(kbuf, TV_K_FRONT), &s) ||
+            !store(kbuf, pages, 0, &kbuf->front_count, s, depth, id)) {
             keep_nearest((id & TV_ID_CANDIDATE) ? &kbuf->candidate_lost : &kbuf->front_lost, depth);
             return false;
         }
@@ -152,7 +153,8 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth
          * dropped without a count, so the list does not read as overflowed. */
         if ((id & TV_ID_CANDIDATE) != 0 && kbuf->back_count >= (kbuf->k_exact ? kbuf->k_exact : TV_K_BACK) / 2)
             return false;
-        return claim(&kbuf->back_count, TV_K_BACK, &s) && store(kbuf, pages, 1, &kbuf->back_count, s, depth, id);
+        return claim(&kbuf->back_count, pvs_kbuf_capacity(kbuf, TV_K_BACK), &s) &&
+               store(kbuf, pages, 1, &kbuf->back_count, s, depth, id);
     case TV_ENTRY_TRIM:
     case TV_ENTRY_UMBRA:
         return push_joined(kbuf, pages, kind, depth, id);
@@ -197,8 +199,10 @@ static uint32_t read_list(const pvs_kpages* pages, uint32_t head, uint32_t count
 void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages)
 {
     assert(kbuf && pages);
-    kbuf->front_held = read_list(pages, kbuf->head[0], kbuf->front_count, TV_K_FRONT, kbuf->front_depth, kbuf->front_tri);
-    kbuf->back_held = read_list(pages, kbuf->head[1], kbuf->back_count, TV_K_BACK, kbuf->back_depth, kbuf->back_tri);
+    kbuf->front_held = read_list(pages, kbuf->head[0], kbuf->front_count, pvs_kbuf_capacity(kbuf, TV_K_FRONT),
+                                 kbuf->front_depth, kbuf->front_tri);
+    kbuf->back_held = read_list(pages, kbuf->head[1], kbuf->back_count, pvs_kbuf_capacity(kbuf, TV_K_BACK),
+                                kbuf->back_depth, kbuf->back_tri);
     kbuf->trim_held = kbuf->umbra_held = 0;
     uint32_t slots = TV_PVS_REGION_SLOTS * (kbuf->trim_count < TV_K_TRIM ? kbuf->trim_count : TV_K_TRIM);
     uint32_t raw[2 * TV_K_TRIM][2];
@@ -228,8 +232,9 @@ void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages)
 bool pvs_kbuf_deep(const pvs_kbuf* k)
 {
     uint32_t e = k->k_exact;
-    bool longer = k->front_count > e || k->back_count > e || k->trim_count > e;
-    bool fit = k->front_count <= TV_K_FRONT && k->back_count <= TV_K_BACK && k->trim_count <= TV_K_TRIM;
+    bool longer = k->front_count > e || k->back_count > e; /* a long region list alone: resolve.h */
+    bool fit = k->front_count <= pvs_kbuf_capacity(k, TV_K_FRONT) && k->back_count <= pvs_kbuf_capacity(k, TV_K_BACK) &&
+               k->trim_count <= TV_K_TRIM;
     return e && longer && fit;
 }
 

@@ -44,9 +44,12 @@ typedef enum pvs_kbuffer_layout {
 typedef struct pvs_desc {
     uint32_t width, height;          /* PVS resolution; 0: 512 x 512 */
     uint32_t k;                      /* k-buffer slots per pixel and kind, 1..TV_K_FRONT; 0: 16 */
-    uint32_t k_deep;                 /* slots stored per list, k..TV_K_FRONT (below k: k): a pixel with a list
-                                        longer than k that fits k_deep resolves without umbrae, not as overflow
+    uint32_t k_deep;                 /* entries stored per list, k..TV_K_FRONT (below k: k): a pixel with a front
+                                        or back list longer than k that fits resolves without umbrae, not as overflow
                                         (docs/trim-regions.md, "Overflow policy") */
+    uint32_t k_regions;              /* entries the region list stores, k_deep..TV_K_TRIM (below: k_deep): one
+                                        longer than k alone resolves with all of them, umbrae included, not as
+                                        overflow (docs/journal/2026-12-03-regovf.md) */
     pvs_kbuffer_layout kbuffer_layout; /* 0: PAGED on a GPU, FLAT on a CPU device */
     uint32_t kbuffer_pages;          /* PAGED: k-buffer pool's first size, in pages of TV_PVS_PAGE entries (it
                                         grows when a computation runs out, and the context keeps the

@@ -537,8 +537,8 @@ static uint32_t resolve_layer(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint
         return resolve_sealed(state, kbuf, out);
     if (state->stencil == TV_STENCIL_UNTRIMMED && kbuf->trim_count == 0)
         return 0;
-    *overflowed = state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > TV_K_FRONT ||
-                  kbuf->back_count > TV_K_BACK || kbuf->trim_count > TV_K_TRIM;
+    *overflowed = state->stencil == TV_STENCIL_OVERFLOW || kbuf->front_count > pvs_kbuf_capacity(kbuf, TV_K_FRONT) ||
+                  kbuf->back_count > pvs_kbuf_capacity(kbuf, TV_K_BACK) || kbuf->trim_count > TV_K_TRIM;
     if (state->stencil == TV_STENCIL_OVERFLOW)
         return resolve_overflow(state, kbuf, out);
     bool first = state->stencil == TV_STENCIL_UNTRIMMED;
@@ -587,7 +587,7 @@ uint32_t pvs_resolve_pixel(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint32_
     assert(state && kbuf && out && overflowed);
     uint32_t n = resolve_layer(state, kbuf, out, overflowed);
     float bound = state->stencil == TV_STENCIL_SEALED ? state->term_depth : INFINITY;
-    if (kbuf->front_count <= TV_K_FRONT || state->stencil == TV_STENCIL_UNTRIMMED ||
+    if (kbuf->front_count <= pvs_kbuf_capacity(kbuf, TV_K_FRONT) || state->stencil == TV_STENCIL_UNTRIMMED ||
         !has_depth(kbuf->candidate_lost) || kbuf->candidate_lost >= bound)
         return n;
     for (uint32_t i = 0; i < kbuf->front_held; i++) {

@@ -57,6 +57,9 @@ typedef struct pvs_kbuf {
     uint32_t front_count, back_count, trim_count;
     /* pvs_desc.k (0: TV_K_*): a pixel with a longer list is deep, its umbrae count for nothing. */
     uint32_t k_exact;
+    /* Entries the front and back lists hold (pvs_desc.k_deep; 0: TV_K_FRONT, TV_K_BACK); the
+     * region list holds TV_K_TRIM (pvs_desc.k_regions), so it may hold more (pvs_kbuf_capacity). */
+    uint32_t k_lists;
     uint32_t head[TV_PVS_LISTS]; /* first page + 1 of each list in the pool (0: empty) */
     /* Entries in the arrays below: min(count, K), fewer when the pool lost some. */
     uint32_t front_held, back_held, trim_held, umbra_held;
@@ -146,9 +149,19 @@ float pvs_umbra_pack(float centre, float footprint);
 float pvs_umbra_centre(float packed);
 float pvs_umbra_footprint(float packed);
 
-/* A deep pixel: k_exact set, a list longer than it, none past its capacity
- * (docs/trim-regions.md, "Overflow policy"). */
+/* A deep pixel: k_exact set, a front or back list longer than it, none past
+ * its capacity (docs/trim-regions.md, "Overflow policy"). Its umbrae count
+ * for nothing, as they end where the centre ray leaves them and some of its
+ * many faces lie nearer the edge; a region list longer than k_exact alone
+ * does not make a pixel deep: its faces are as few as a shallow pixel's,
+ * and it keeps its umbrae (docs/journal/2026-12-03-regovf.md). */
 bool pvs_kbuf_deep(const pvs_kbuf* kbuf);
+
+/* Entries the front or back list holds: k_lists where set, else `max` (TV_K_FRONT, TV_K_BACK). */
+static inline uint32_t pvs_kbuf_capacity(const pvs_kbuf* kbuf, uint32_t max)
+{
+    return kbuf->k_lists && kbuf->k_lists < max ? kbuf->k_lists : max;
+}
 
 /* Gathers the pixel's entries from the pages into kbuf's arrays, as P3 reads
  * them: the first min(count, K) slots of each list, skipping holes. */

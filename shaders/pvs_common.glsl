@@ -21,6 +21,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
     uint width, height, k, triangle_count; // width, height: the whole image
     uint tile_x, tile_y, tile_w, tile_h;    // the tile being computed (pvs/tiles.h): per-pixel buffers index it
     uint explain, kb_holes, list_capacity, k_exact; // explain: tri_flags collect TV_REASON_* bits (pvs_desc.explain); kb_holes: pvs_kbuffer.glsl; list_capacity: TV_PVS_BIND_ORDER's cap; k: slots stored per list, k_exact: pvs_desc.k (a longer list: a deep pixel)
+    uint k_lists, k_regions, view_pad0, view_pad1; // entries the front and back lists hold (k_deep), the region list (k_regions)
     float depth_bound[];                    // pvs/depth_bound.h's cells, all levels (pvs_trim.glsl)
 } view;
 
@@ -39,6 +40,10 @@ uint kb_flat_page(uint p, uint list)
 {
     return (list * view.tile_w * view.tile_h + p) * ((view.k + TV_PVS_PAGE - 1u) / TV_PVS_PAGE) + 1u;
 }
+
+// Entries each list holds before it overflows: front, back, region list, and
+// the umbra list's slot count (its lost-page mark only).
+uvec4 kb_capacity() { return uvec4(view.k_lists, view.k_lists, view.k_regions, view.k); }
 
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ADJ) readonly buffer pvs_adj_buf { uint adjacency[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LAYER_TRIS) readonly buffer pvs_layer_buf { uint layer_tris[]; };

@@ -156,7 +156,7 @@ float candidate_depth(float bound)
 // visibility buffer holds its nearest face; P3 ignores its fronts).
 void spill(uint p, float w, float slope)
 {
-    if (pixcount[p].x <= view.k || pixstate[p].x == TV_STENCIL_UNTRIMMED)
+    if (pixcount[p].x <= view.k_lists || pixstate[p].x == TV_STENCIL_UNTRIMMED)
         return;
     if ((pc.kind & TV_PVS_KIND_WIDE) == 0u) {
         if (pixstate[p].x == TV_STENCIL_OVERFLOW && lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_FRONT] != 0x7F800000u)

@@ -105,7 +105,7 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
     uvec2 e = uvec2(d, id);
     if (kind == TV_PVS_KIND_FRONT) {
         uint slot = atomicAdd(pixcount[p].x, 1u);
-        if (slot >= view.k || !pvs_store(p, 0u, slot, e)) {
+        if (slot >= view.k_lists || !pvs_store(p, 0u, slot, e)) {
             atomicMin(lost[TV_PVS_LOST_STRIDE * p + ((id & TV_ID_CANDIDATE) != 0u ? TV_PVS_LOST_CANDIDATE : TV_PVS_LOST_FRONT)], d);
             return false;
         }
@@ -113,7 +113,7 @@ bool pvs_push(uint p, uint kind, float depth, uint id)
         if ((id & TV_ID_CANDIDATE) != 0u && pixcount[p].y >= view.k_exact / 2u)
             return false; // pvs_kbuf_push: half the list stays for real backs
         uint slot = atomicAdd(pixcount[p].y, 1u);
-        return slot < view.k && pvs_store(p, 1u, slot, e);
+        return slot < view.k_lists && pvs_store(p, 1u, slot, e);
     }
     return true;
 }
@@ -136,10 +136,10 @@ bool pvs_push_region(uint p, float trim, float second, float umbra, uint id)
     pvs_mark_active(p);
     uint r = atomicAdd(pixcount[p].z, 1u);
     uvec2 a = uvec2(floatBitsToUint(trim), id), b = uvec2(floatBitsToUint(umbra), floatBitsToUint(second));
-    if (r < view.k && pvs_store_region(p, TV_PVS_REGION_SLOTS * r, a) &&
+    if (r < view.k_regions && pvs_store_region(p, TV_PVS_REGION_SLOTS * r, a) &&
         pvs_store_region(p, TV_PVS_REGION_SLOTS * r + 1u, b))
         return true;
-    if (r < view.k) // the umbra list's chain too: the counter of the entries reads as lost
+    if (r < view.k_regions) // the umbra list's chain too: the counter of the entries reads as lost
         atomicOr(pixcount[p].z, TV_PVS_COUNT_LOST);
     float nearest = trim == 0.0 ? second : second == 0.0 ? trim : min(trim, second);
     atomicMin(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_TRIM], floatBitsToUint(nearest));

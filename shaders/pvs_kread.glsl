@@ -13,7 +13,7 @@ struct kb_cursor {
 
 kb_cursor kb_open(uint list)
 {
-    return kb_cursor(KB_PAGED ? kheads[TV_PVS_LISTS * P + list] : kb_flat_page(P, list), 0u, min(cnt[list], view.k));
+    return kb_cursor(KB_PAGED ? kheads[TV_PVS_LISTS * P + list] : kb_flat_page(P, list), 0u, min(cnt[list], view.k_lists)); // the region lists: kb_open_regions
 }
 
 // The cursor's next slot, a hole or not (past the end of a chain cut short,
@@ -49,7 +49,7 @@ struct kb_regions {
 
 kb_regions kb_open_regions()
 {
-    uint slots = TV_PVS_REGION_SLOTS * min(cnt.z, view.k);
+    uint slots = TV_PVS_REGION_SLOTS * min(cnt.z, view.k_regions);
     kb_cursor c = kb_open(2u);
     c.end = min(slots, view.k);
     return kb_regions(c, slots - c.end);

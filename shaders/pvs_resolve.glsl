@@ -141,8 +141,9 @@ void resolve_overflow()
     hide_begin = hide_end = spill_lo = spill_hi = 0.0;
 }
 
-// pvs_kbuf_deep: its umbrae count for nothing (resolve.c says why)
-bool deep_pixel() { return any(greaterThan(cnt, uvec4(view.k_exact))) && all(lessThanEqual(cnt, uvec4(view.k))); }
+// pvs_kbuf_deep: its umbrae count for nothing (resolve.c says why); a long
+// region list alone does not make a pixel deep (resolve.h)
+bool deep_pixel() { return any(greaterThan(cnt.xy, uvec2(view.k_exact))) && all(lessThanEqual(cnt, kb_capacity())); }
 
 void umbra_min(float u, inout float nearest, inout float fp) { nearest = min(nearest, pvs_umbra_centre(u)); fp = min(fp, pvs_umbra_footprint(u)); }
 
@@ -484,7 +485,7 @@ uint resolve_begin(out bool first)
 uint resolve_intervals(uint n)
 {
     form_intervals(n);
-    trims_lost = cnt.z > view.k ? kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_TRIM]) : kdepth(0x7F800000u);
+    trims_lost = cnt.z > view.k_regions ? kdepth(lost[TV_PVS_LOST_STRIDE * P + TV_PVS_LOST_TRIM]) : kdepth(0x7F800000u);
     regions_build(n);
     validate(n);
     return replace_backs(n);
@@ -574,8 +575,8 @@ void finish_pixel(uint seq_len, bool handled)
 {
     if (overflow_due) // one inlined copy (llvmpipe), not one per stage that finds it due
         resolve_overflow();
-    bool overflowed = handled || any(greaterThan(cnt, uvec4(view.k)));
-    if (cnt.x > view.k)
+    bool overflowed = handled || any(greaterThan(cnt, kb_capacity()));
+    if (cnt.x > view.k_lists)
         request_spill();
     pixstate[P] = uvec4(stencil, stencil == TV_STENCIL_SEALED ? floatBitsToUint(term_depth) : carry_count,
                         floatBitsToUint(hide_begin),
@@ -584,7 +585,7 @@ void finish_pixel(uint seq_len, bool handled)
         carry_buf[P * TV_K_CARRY + c] = uvec4(floatBitsToUint(carry[c].depth), carry[c].kind, carry[c].id,
                                               floatBitsToUint(carry[c].second));
     if (!KB_PAGED) { // the bytes read: FLAT's kbuffer_bytes_used (PAGED counts the pages taken)
-        uvec4 stored = min(cnt, uvec4(view.k));
+        uvec4 stored = min(cnt, kb_capacity());
         atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].x, 8u * (stored.x + stored.y + TV_PVS_REGION_SLOTS * stored.z));
     }
     atomicAdd(layer_stats[TV_PVS_LAYER_STATS_STRIDE * pc.layer].y, 1u);

@@ -4,7 +4,7 @@
 #include <string.h>
 
 uint32_t harness_pages = HARNESS_MAX_PAGES;
-uint32_t harness_k_exact;
+uint32_t harness_k_exact, harness_k_lists;
 
 /* prior_front / prior_back: P2's nearest front / back depth at the pixel
  * centre over this and the earlier layers (0: none). */
@@ -17,6 +17,7 @@ layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_
     pvs_kbuf k;
     memset(&k, 0, sizeof k);
     k.k_exact = harness_k_exact;
+    k.k_lists = harness_k_lists;
     k.nearest_front = prior_front;
     k.nearest_back = prior_back;
     layer_result r = {0};

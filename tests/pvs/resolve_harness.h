@@ -41,6 +41,8 @@ typedef struct layer_result {
 extern uint32_t harness_pages;
 /* pvs_kbuf.k_exact of each run_layer* (0: none, no pixel is deep). */
 extern uint32_t harness_k_exact;
+/* pvs_kbuf.k_lists of each run_layer* (0: TV_K_FRONT, TV_K_BACK). */
+extern uint32_t harness_k_lists;
 
 
 /* One layer: pushes `items` into a k-buffer as P2 would (prior_front /

@@ -36,6 +36,7 @@
 #define IDS_PER_PIXEL 8u /* triangle ids of pixel p: [p * 8, p * 8 + 8) */
 #define K TV_K_FRONT     /* the reference's capacity, so both truncate alike */
 #define K_EXACT (K / 2) /* pvs_desc.k: a pixel with a longer list is deep (no umbrae) */
+#define K_LISTS (3 * K / 4) /* pvs_desc.k_deep: the front and back lists hold fewer than the region list */
 
 static rnd_context* g_rnd;
 static uint32_t g_seed = 12345u;
@@ -83,9 +84,9 @@ typedef struct case_data {
 static void store_pixel(const pvs_kbuf* raw, uint32_t umbrae, pvs_kpages* pages, const uint32_t heads[TV_PVS_LISTS],
                         pvs_kbuf* kb)
 {
-    *kb = (pvs_kbuf){.k_exact = K_EXACT, .nearest_front = raw->nearest_front, .nearest_back = raw->nearest_back,
-                     .nearest_culled_back = raw->nearest_culled_back, .front_lost = raw->front_lost,
-                     .candidate_lost = raw->candidate_lost, .trim_lost = raw->trim_lost};
+    *kb = (pvs_kbuf){.k_exact = K_EXACT, .k_lists = K_LISTS, .nearest_front = raw->nearest_front,
+                     .nearest_back = raw->nearest_back, .nearest_culled_back = raw->nearest_culled_back,
+                     .front_lost = raw->front_lost, .candidate_lost = raw->candidate_lost, .trim_lost = raw->trim_lost};
     if (heads)
         memcpy(kb->head, heads, sizeof kb->head);
     uint32_t room = pages->page_count;
@@ -266,6 +267,8 @@ static void upload(pvs_context* ctx, const case_data* c)
     view->tile_w = view->tile_h = SIDE; /* one tile */
     view->k = k;
     view->k_exact = K_EXACT;
+    view->k_lists = K_LISTS;
+    view->k_regions = K;
     view->triangle_count = ctx->triangle_count;
 }
 

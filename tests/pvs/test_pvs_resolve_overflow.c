@@ -206,6 +206,33 @@ static void test_deep_pixel_without_umbrae(void)
     harness_k_exact = 0;
 }
 
+/* A pixel deep by its region list alone keeps its umbrae: the fronts and
+ * backs of test_deep_pixel_without_umbrae's shallow pixel (k_exact 3) with
+ * two regions in front of them that meet no interval, so four region
+ * entries: as shallow, [2, 2.5] lies in region 1's umbra and is hidden.
+ * With the front and back lists holding 3 (pvs_desc.k_regions past k_deep)
+ * the region list still resolves whole, and a fourth front overflows its
+ * list (at k_lists 0 it would be stored and make the pixel deep, 2 output);
+ * F 5 seals in front of it (docs/journal/2026-12-03-regovf.md). */
+static void test_deep_by_regions_keeps_umbrae(void)
+{
+    harness_k_exact = 3;
+    for (uint32_t lists = 0; lists <= 3; lists += 3) {
+        harness_k_lists = lists;
+        pvs_pixel_state s = {0};
+        layer_result r = RUN(s, T(0.5f, 7), T(0.6f, 8), F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2),
+                             T(2.2f, 2), B(2.5f), U(4.0f, 2), F(5.0f, 3), B(6.0f));
+        TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_SEALED);
+        CHECK_OUT(r, 1, 3);
+    }
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, T(0.5f, 7), T(0.6f, 8), F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2),
+                         T(2.2f, 2), B(2.5f), U(4.0f, 2), F(5.0f, 3), B(6.0f), F(7.0f, 4));
+    TV_CHECK(r.overflowed && s.stencil == TV_STENCIL_SEALED);
+    CHECK_OUT(r, 1, 3);
+    harness_k_exact = harness_k_lists = 0;
+}
+
 /* Sponza's deep pixel (382, 256) (docs/journal/2026-12-03-deepfix.md): a
  * shallow layer validates [1, 1.5] with region 1's umbra at 10 and carries
  * the hidden range [1, 10]; a later layer's faces at 4-5 lie in it. At a
@@ -549,6 +576,7 @@ int main(void)
     TV_TEST_RUN(test_overflow_umbra_list);
     TV_TEST_RUN(test_deep_pixel_without_umbrae);
     TV_TEST_RUN(test_deep_pixel_drops_carried_range);
+    TV_TEST_RUN(test_deep_by_regions_keeps_umbrae);
     TV_TEST_RUN(test_overflow_trim_list);
     TV_TEST_RUN(test_regions_in_one_entry);
     TV_TEST_RUN(test_overflow_back_list);
