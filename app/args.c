@@ -3,6 +3,7 @@
 #include "cli_viewcell.h"
 #include "fs.h"
 #include "log.h"
+#include "pvs.h"
 
 #include <errno.h>
 #include <math.h>
@@ -155,6 +156,15 @@ bool tv_arg_require(const char* name, double value, bool ok, const char* require
     if (!ok)
         tv_log(TV_LOG_ERROR, "--%s %g: must be %s", name, value, requirement);
     return ok;
+}
+
+bool tv_arg_k(int k, int k_deep, int k_regions)
+{
+    _Static_assert(PVS_K_MAX == 32, "the messages below say 32");
+    const int max = (int)PVS_K_MAX;
+    return tv_arg_require("k", k, k >= 1 && k <= max, "in [1, 32]") &&
+           tv_arg_require("k-deep", k_deep, k_deep >= 0 && k_deep <= max, "in [0, 32]") &&
+           tv_arg_require("k-regions", k_regions, k_regions >= 0 && k_regions <= max, "in [0, 32]");
 }
 
 bool tv_arg_viewcell(float delta, float fov, float fov_pvs)

@@ -72,6 +72,10 @@ bool tv_arg_require(const char* name, double value, bool ok, const char* require
  * three are in range. */
 bool tv_arg_viewcell(float delta, float fov, float fov_pvs);
 
+/* --k (1..PVS_K_MAX), --k-deep and --k-regions (0..PVS_K_MAX: 0 is the default) of the tr method, checked
+ * before any device is made: each out of range gives tv_arg_require's line. */
+bool tv_arg_k(int k, int k_deep, int k_regions);
+
 /* --gt-cache DIR: creates the folder (NULL: no cache, true). When it cannot,
  * prints "--gt-cache DIR: cannot create the folder" and returns false. */
 bool tv_arg_gt_cache(const char* dir);

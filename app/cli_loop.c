@@ -32,9 +32,7 @@ void tv_loop_args(tv_loop_opts* o, tv_arg rows[TV_LOOP_ARG_COUNT])
 
 bool tv_loop_validate(const tv_loop_opts* o)
 {
-    return tv_arg_kbuffer_layout(o->kb_layout) >= 0 && tv_arg_require("k", o->k, o->k >= 1, ">= 1") &&
-           tv_arg_require("k-deep", o->k_deep, o->k_deep >= 0, ">= 0") &&
-           tv_arg_require("k-regions", o->k_regions, o->k_regions >= 0, ">= 0") &&
+    return tv_arg_kbuffer_layout(o->kb_layout) >= 0 && tv_arg_k(o->k, o->k_deep, o->k_regions) &&
            tv_arg_require("samples", o->samples, o->samples >= 1, ">= 1") &&
            tv_arg_require("fov", o->fov, o->fov > 1.0f && o->fov < 170.0f, "in (1, 170) degrees") &&
            tv_arg_require("ipd", o->ipd, o->ipd >= 0.0f && o->ipd <= 1.0f, "in [0, 1] m") &&

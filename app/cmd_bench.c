@@ -450,9 +450,7 @@ int tv_cmd_bench(int argc, char** argv)
     if (!o.pvs_res[0])
         o.pvs_res[0] = o.pvs_res[1] = 512;
     bench_run b = {.o = &o, .t0 = tv_now_ms()};
-    if (!parse_lists(&o, &b) || tv_arg_kbuffer_layout(o.kb_layout) < 0 || !tv_arg_require("k", o.k, o.k >= 1, ">= 1") ||
-        !tv_arg_require("k-deep", o.k_deep, o.k_deep >= 0, ">= 0") ||
-        !tv_arg_require("k-regions", o.k_regions, o.k_regions >= 0, ">= 0") ||
+    if (!parse_lists(&o, &b) || tv_arg_kbuffer_layout(o.kb_layout) < 0 || !tv_arg_k(o.k, o.k_deep, o.k_regions) ||
         !tv_arg_require("max-layers", o.max_layers, o.max_layers >= -1, ">= -1") || !tv_arg_gt_cache(o.gt_cache))
         return 2;
     float dir_len = sqrtf(o.dir[0] * o.dir[0] + o.dir[1] * o.dir[1] + o.dir[2] * o.dir[2]);

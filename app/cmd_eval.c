@@ -133,9 +133,7 @@ static bool validate(const eval_opts* o, pvs_method_desc* md)
                                    .max_layers = tv_arg_max_layers(o->max_layers),
                                    .explain = o->explain},
                             .width = o->res[0], .height = o->res[1], .gt_samples = (uint32_t)o->samples};
-    if (layout < 0 || !tv_arg_require("k", o->k, o->k >= 1, ">= 1") ||
-        !tv_arg_require("k-deep", o->k_deep, o->k_deep >= 0, ">= 0") ||
-        !tv_arg_require("k-regions", o->k_regions, o->k_regions >= 0, ">= 0") ||
+    if (layout < 0 || !tv_arg_k(o->k, o->k_deep, o->k_regions) ||
         !tv_arg_require("max-layers", o->max_layers, o->max_layers >= -1, ">= -1") ||
         !tv_arg_viewcell(o->delta, o->fov, o->fov_pvs) || !tv_arg_gt_cache(o->gt_cache))
         return false;

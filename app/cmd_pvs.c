@@ -120,8 +120,7 @@ int tv_cmd_pvs(int argc, char** argv)
                                  .max_layers = tv_arg_max_layers(max_layers)},
                           .width = res[0], .height = res[1]};
     pred_viewcell vc;
-    if (kb_layout < 0 || !tv_arg_require("k", k, k >= 1, ">= 1") || !tv_arg_require("k-deep", k_deep, k_deep >= 0, ">= 0") ||
-        !tv_arg_require("k-regions", k_regions, k_regions >= 0, ">= 0") ||
+    if (kb_layout < 0 || !tv_arg_k(k, k_deep, k_regions) ||
         !tv_arg_require("coop-min", coop_min, coop_min >= 0, ">= 0") ||
         !tv_arg_require("tile-pixels", tile_pixels, tile_pixels >= 0, ">= 0") ||
         !tv_arg_require("kbuffer-pages", pages, pages >= 0, ">= 0") ||

@@ -277,6 +277,8 @@ static bool mark_cracks(const scn_scene* scene, const uint32_t* indices, uint32_
     return true;
 }
 
+_Static_assert(PVS_K_MAX <= TV_K_FRONT && PVS_K_MAX <= TV_K_BACK && PVS_K_MAX <= TV_K_TRIM && PVS_K_MAX <= TV_K_UMBRA,
+               "pvs.h promises k up to PVS_K_MAX");
 _Static_assert(TV_ADJ_REST == SCN_EDGE_REST, "the shaders read scn_join_rest_edges' flag");
 
 /* Border edges resting on an opaque face become TV_ADJ_REST | face, after
@@ -427,11 +429,13 @@ static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
 
 static bool check_desc(const pvs_desc* d, char* err, size_t err_size)
 {
-    uint32_t k_max = d->k > d->k_deep ? d->k : d->k_deep;
-    k_max = k_max > d->k_regions ? k_max : d->k_regions;
-    if (k_max > TV_K_FRONT || k_max > TV_K_BACK || k_max > TV_K_TRIM || k_max > TV_K_UMBRA) {
-        snprintf(err, err_size, "pvs: k = %u exceeds the shader capacity TV_K_* = %u", k_max, TV_K_FRONT);
-        return false;
+    const char* names[3] = {"k", "k_deep", "k_regions"};
+    const uint32_t ks[3] = {d->k, d->k_deep, d->k_regions};
+    for (int i = 0; i < 3; i++) {
+        if (ks[i] > PVS_K_MAX) {
+            snprintf(err, err_size, "pvs: %s = %u exceeds the shader capacity TV_K_* = %u", names[i], ks[i], PVS_K_MAX);
+            return false;
+        }
     }
     if (!(d->near_m >= 0.0f)) {
         snprintf(err, err_size, "pvs: near_m must be >= 0 (0 = default)");

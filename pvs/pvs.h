@@ -41,13 +41,16 @@ typedef enum pvs_kbuffer_layout {
     PVS_KBUFFER_PAGED = 2,
 } pvs_kbuffer_layout;
 
+/* The largest k, k_deep and k_regions: the shaders' list capacity (TV_K_* in shaders/pvs_shared.h). */
+#define PVS_K_MAX 32u
+
 typedef struct pvs_desc {
     uint32_t width, height;          /* PVS resolution; 0: 512 x 512 */
-    uint32_t k;                      /* k-buffer slots per pixel and kind, 1..TV_K_FRONT; 0: 16 */
-    uint32_t k_deep;                 /* entries stored per list, k..TV_K_FRONT (below k: k): a pixel with a front
+    uint32_t k;                      /* k-buffer slots per pixel and kind, 1..PVS_K_MAX; 0: 16 */
+    uint32_t k_deep;                 /* entries stored per list, k..PVS_K_MAX (below k: k): a pixel with a front
                                         or back list longer than k that fits resolves without umbrae, not as overflow
                                         (docs/trim-regions.md, "Overflow policy") */
-    uint32_t k_regions;              /* entries the region list stores, k_deep..TV_K_TRIM (below: k_deep): one
+    uint32_t k_regions;              /* entries the region list stores, k_deep..PVS_K_MAX (below: k_deep): one
                                         longer than k alone resolves with all of them, umbrae included, not as
                                         overflow (docs/journal/2026-12-03-regovf.md) */
     pvs_kbuffer_layout kbuffer_layout; /* 0: PAGED on a GPU, FLAT on a CPU device */
