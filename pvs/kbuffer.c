@@ -301,10 +301,13 @@ bool pvs_umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t regio
         return false;
     float nearest = INFINITY, fp = INFINITY, u;
     for (uint32_t i = 0; i < k->umbra_held + s->carry_count; i++) {
-        if (i < k->umbra_held ? k->umbra_region[i] != region
-                              : !pvs_carry_umbra(&s->carry[i - k->umbra_held], region, &u))
+        if (i < k->umbra_held) { /* this layer's, then the carried ones */
+            if (k->umbra_region[i] != region)
+                continue;
+            u = k->umbra_depth[i];
+        } else if (!pvs_carry_umbra(&s->carry[i - k->umbra_held], region, &u)) {
             continue;
-        u = i < k->umbra_held ? k->umbra_depth[i] : u;
+        }
         nearest = fminf(nearest, pvs_umbra_centre(u));
         fp = fminf(fp, pvs_umbra_footprint(u));
     }

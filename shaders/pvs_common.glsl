@@ -117,6 +117,9 @@ float pvs_umbra_pack(float centre, float footprint)
     return uintBitsToFloat(b | (uint(q) + 1u));
 }
 
+// pvs_spill_hidden (pvs/resolve.h): a candidate strictly inside the spill span [lo, hi] is hidden, lost or stored.
+bool pvs_spill_hidden(float lo, float hi, float depth) { return lo < depth && depth < hi; }
+
 #ifdef TV_PVS_WRITES
 // Puts triangle `id` in the PVS. In explain mode (pvs_desc.explain) its flag
 // collects the TV_REASON_* bit of every rule that output it; otherwise a plain

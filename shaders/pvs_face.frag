@@ -82,15 +82,6 @@ bool touches_pixel()
     return true;
 }
 
-// The depth a candidate enters at: the nearest depth of the undilated
-// triangle's part inside the pixel's square, never nearer than `bound`
-// (max(nearest corner, centre depth - half the slope), the nearest the plane
-// has anywhere in the square). 1/w is affine in screen space, so over that
-// convex part it is largest at one of its corners: a triangle corner in the
-// square, a square corner in the triangle, or where an edge crosses a side.
-// Nearer only adds output (a candidate never occludes), so the part is
-// taken with a slack of 1/256 pixel; if it is found empty, or the triangle
-// was not dilated (a see-through one with a corner behind v*), `bound` stands.
 // The largest 1/w of edge a-b (1/w ia, ib) at a, if a lies in the square
 // [lo, hi], and where the edge crosses the square's sides. Written without
 // run-time indexed arrays or loops: llvmpipe keeps those in memory.
@@ -169,7 +160,7 @@ void spill(uint p, float w, float slope)
     float span_lo = uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_SPAN_LO]);
     float span_hi = uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_SPAN_HI]);
     if (depth < uintBitsToFloat(lost[TV_PVS_LOST_STRIDE * p + TV_PVS_LOST_CANDIDATE]) && // P3's bound
-        !(span_lo < depth && depth < span_hi)) // and its spill span
+        !pvs_spill_hidden(span_lo, span_hi, depth)) // and its spill span
         pvs_mark(v_triangle, TV_REASON_OVERFLOW);
 }
 

@@ -542,7 +542,7 @@ void request_spill()
     out_reason = TV_REASON_OVERFLOW; // what the dilated spill draw would have output
     uvec2 e;
     for (kb_cursor c = kb_open(0u); kb_next(c, e);) {
-        if ((e.y & TV_ID_CANDIDATE) != 0u && kdepth(e.x) < bound && !(spill_lo < kdepth(e.x) && kdepth(e.x) < spill_hi))
+        if ((e.y & TV_ID_CANDIDATE) != 0u && kdepth(e.x) < bound && !pvs_spill_hidden(spill_lo, spill_hi, kdepth(e.x)))
             output_id(e.y);
     }
     out_reason = TV_REASON_FRONT;
