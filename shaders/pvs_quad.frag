@@ -21,10 +21,11 @@ void main()
 {
     o_unused = 0u;
     // The umbra's footprint for the spill span (pvs_umbra_pack): its nearest
-    // depth over the square of two pixels' side around the centre (eyes see
-    // up to 0.7 px past the centre's offset, docs/pvs-edge-cases.md; over the
-    // pixel's own, interior_walk lost 4 FN px); 1 / depth is affine in the
-    // image, so it is exact; derivatives before any return (uniform flow).
+    // depth over the square of two pixels' side around the centre. A margin,
+    // not a bound: below 0.99 px of half side interior_walk loses a false
+    // positive that covers the walk's centre-umbra loss (docs/pvs-edge-cases.md,
+    // journal/2026-12-03-fp098.md); 1 / depth is affine in the image, so it is
+    // exact; derivatives before any return (uniform flow).
     float inv_umbra = v_w_over.z * gl_FragCoord.w;
     float footprint = 1.0 / (inv_umbra + (abs(dFdx(inv_umbra)) + abs(dFdy(inv_umbra))));
     uint p = pvs_pixel();
