@@ -438,7 +438,7 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
     uint32_t c = 0;
     uint32_t run = iv->run < 0 ? n : (uint32_t)iv->run, from = run;
     /* trims in the first front's plane that rounded in front of it (TV_PVS_TIE_LO): carried, moved to it */
-    while (from < n && from > 0 && seq[from - 1].kind == TV_ENTRY_TRIM &&
+    while (iv->run >= 0 && from > 0 && seq[from - 1].kind == TV_ENTRY_TRIM &&
            seq[from - 1].depth >= seq[run].depth * (float)TV_PVS_TIE_LO)
         from--;
     for (uint32_t i = from; i < n; i++) {

@@ -427,7 +427,7 @@ bool carry_run(uint n)
 {
     carry_next_count = 0u;
     uint run = iv_run < 0 ? n : uint(iv_run), from = run;
-    while (from < n && from > 0u && ent[from - 1u].kind == TV_ENTRY_TRIM && ent[from - 1u].depth >= ent[run].depth * TV_PVS_TIE_LO)
+    while (iv_run >= 0 && from > 0u && ent[from - 1u].kind == TV_ENTRY_TRIM && ent[from - 1u].depth >= ent[run].depth * TV_PVS_TIE_LO)
         from--; // resolve.c: in the first front's plane
     for (uint i = from; i < n; i++) {
         if (is_candidate_back(ent[i]) || (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth >= trims_lost))

@@ -74,12 +74,11 @@
  * overflowed (oa:czest2ctf: PVS 2 -> 28 % of the scene). Twice
  * TV_PVS_TRIM_NUDGE, so a trim in the twin's plane still lies inside. */
 #define TV_PVS_CULLED_NUDGE 2e-5
-/* A border edge's single trim lies in its own triangle's plane, often the face the pixel's interval starts or ends
- * at, and ties with it only up to the rounding of two primitives' interpolated depths (oa:oasago2: 2e-6 of the
- * depth in front of the front, so the trim neither met the interval nor was carried with its run). Fragments this
- * close to an interval's ends count as inside (region_meets, carry_run). */
+/* A border edge's single trim lies in its own triangle's plane, often the face the pixel's interval starts at, and
+ * ties with it only up to the rounding of two primitives' interpolated depths (oa:oasago2: 2e-6 of the depth in
+ * front of the front, so the trim neither met the interval nor was carried with its run). A fragment this close in
+ * front of an interval's front counts as inside (region_meets, carry_run). */
 #define TV_PVS_TIE_LO (1.0 - TV_PVS_TRIM_NUDGE)
-#define TV_PVS_TIE_HI (1.0 + TV_PVS_TRIM_NUDGE)
 /* A region with two or three draws whose nearest fragment lies this fraction of the front's depth behind the front of
  * a one-solid interval does not validate it (docs/pvs-edge-cases.md, "Regions behind a solid's front"). */
 #define TV_PVS_SOLID_MARGIN 0.1
