@@ -188,11 +188,12 @@ static void draw_indirect(pvs_context* ctx, VkCommandBuffer cmd, int pipe, uint3
                       sizeof(VkDrawIndirectCommand));
 }
 
-typedef enum pass_kind { PASS_CLEAR, PASS_LAYER, PASS_SPILL } pass_kind;
+typedef enum pass_kind { PASS_CLEAR, PASS_FRONTS, PASS_LAYER, PASS_SPILL } pass_kind;
 
 /* One dynamic-rendering pass on visibility buffer `vis` (0 exact, 1 wide)
  * over tile `t`: clear only, P2's draws of the current layer (the wide pass
- * draws the faces only, dilated, for the visibility buffer), or the spill
+ * draws the faces only, dilated, for the visibility buffer; the exact pass's
+ * fronts are PASS_FRONTS, before the rest: TV_PVS_PRIOR_CULLED_BEHIND), or the spill
  * draw after P3 (exact; it changes neither attachment: every fragment ties in
  * depth). The viewport is the whole image's and the tile a scissor, so every
  * pixel rasterises exactly as without tiling (an offset viewport would round
@@ -227,9 +228,10 @@ static void render_pass(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
     if (what == PASS_SPILL)
         draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | TV_PVS_KIND_SPILL | (vis ? TV_PVS_KIND_WIDE : 0u),
                       vis ? TV_PVS_C_DRAW_SPILL_WIDE : TV_PVS_C_DRAW_SPILL);
-    if (what == PASS_LAYER) {
-        const uint32_t wide = vis ? TV_PVS_KIND_WIDE : 0u;
+    const uint32_t wide = vis ? TV_PVS_KIND_WIDE : 0u;
+    if (what == PASS_FRONTS || (what == PASS_LAYER && vis))
         draw_indirect(ctx, cmd, PVS_PIPE_FF, TV_PVS_KIND_FRONT | wide, TV_PVS_C_DRAW_FF);
+    if (what == PASS_LAYER) {
         draw_indirect(ctx, cmd, PVS_PIPE_BF, TV_PVS_KIND_BACK | wide, TV_PVS_C_DRAW_BF);
         if (!vis) {
             draw_indirect(ctx, cmd, PVS_PIPE_QUAD, TV_PVS_KIND_TRIM, TV_PVS_C_DRAW_TRIM);
@@ -314,6 +316,8 @@ static void record_tile(pvs_context* ctx, VkCommandBuffer cmd, const pvs_tile* t
         if (first) /* every tile classifies the same triangles */
             copy_draw_counts(ctx, cmd, l);
         pvs_timestamp(ctx, cmd, ts);
+        render_pass(ctx, cmd, t, 0, PASS_FRONTS);
+        barrier(cmd); /* the culled backs read the layer's nearest front (TV_PVS_PRIOR_CULLED_BEHIND) */
         render_pass(ctx, cmd, t, 0, PASS_LAYER);
         barrier(cmd); /* the dilated pass reads the exact pass's centre depths */
         render_pass(ctx, cmd, t, 1, PASS_LAYER);

@@ -5,7 +5,7 @@
 
 /* Upper bounds of the per-pixel sequences (thread-local arrays on the GPU). */
 #define SEQ_MAX (2 * (TV_K_CARRY + TV_K_TRIM) + TV_K_FRONT + TV_K_BACK) // two trim depths per region entry
-#define IV_MAX (TV_K_BACK + 2 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 2 : TV_K_FRONT + TV_K_CARRY) // + two prior backs
+#define IV_MAX (TV_K_BACK + 3 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 3 : TV_K_FRONT + TV_K_CARRY) // + three prior backs
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
 typedef struct seq_entry {
@@ -142,6 +142,9 @@ static uint32_t gather(const pvs_pixel_state* s, const pvs_kbuf* k, bool first, 
             seq[n++] = make_entry(k->nearest_back, TV_ENTRY_BACK, TV_ID_PRIOR, 0);
         if (has_depth(k->nearest_culled_back) && !stored_face(k, TV_ENTRY_BACK, k->nearest_culled_back))
             seq[n++] = make_entry(k->nearest_culled_back, TV_ENTRY_BACK, TV_ID_PRIOR_CULLED, 0);
+        if (has_depth(k->culled_behind) && k->culled_behind != k->nearest_culled_back &&
+            !stored_face(k, TV_ENTRY_BACK, k->culled_behind))
+            seq[n++] = make_entry(k->culled_behind, TV_ENTRY_BACK, TV_ID_PRIOR_CULLED, 0);
     }
     for (uint32_t i = 0; i < s->carry_count; i++) {
         float trim[2];
@@ -198,42 +201,7 @@ static void form_intervals(seq_entry* seq, uint32_t n, intervals* iv)
     }
 }
 
-/* Whether trim seq[i]'s region meets the depth range [lo, hi] at this pixel. P2 puts a trim quad's fragments at up
- * to three depths: the midpoint of its solid's two planes, at the nearer and (grazing fronts only) at the farther
- * one, those two moved TV_PVS_TRIM_NUDGE towards the other. The solid lies between the planes, so the region meets
- * a range its fragments overlap or straddle (a thin solid's interval can fall between two draws), and a range that
- * starts on its farther plane: a face in that plane (found on oa:oa_dm5; docs/trim-regions.md, "Umbra quad and trim
- * quad") lies behind every draw. With two draws that plane is twice the midpoint less the nearer. When trims were
- * lost, only fragments in front of the nearest lost one count (all of those found room): which ones behind it did
- * depends on arrival order, and the PVS must not. */
-static bool region_meets(const seq_entry* seq, uint32_t n, uint32_t i, float lo, float hi, float trims_lost)
-{
-    float mn = INFINITY, mx = -INFINITY;
-    uint32_t count = 0;
-    for (uint32_t j = 0; j < n; j++) {
-        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == seq[i].id && seq[j].depth < trims_lost) {
-            mn = fminf(mn, seq[j].depth);
-            mx = fmaxf(mx, seq[j].depth);
-            count++;
-        }
-    }
-    if (count == 0)
-        return false;
-    if (mn <= hi && mx >= lo)
-        return true;
-    float far = count == 2 ? 2.0f * mx - mn : mx;
-    return count > 1 && fabsf(lo - far) <= 4.0f * TV_PVS_TRIM_NUDGE * far;
-}
-
-/* Whether trim region `id` has a fragment among seq[0, n). */
-static bool region_in(const seq_entry* seq, uint32_t n, uint32_t id)
-{
-    for (uint32_t j = 0; j < n; j++) {
-        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == id)
-            return true;
-    }
-    return false;
-}
+#include "resolve_regions.h"
 
 /* An interval is valid when a trim region meets [f, b] (region_meets). Its hidden range
  * ends at the nearest umbra of the validating regions (the most conservative
@@ -246,7 +214,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
 {
     for (uint32_t v = 0; v < iv->count; v++) {
         float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
-        bool lost = hi >= iv->trims_lost;
+        bool lost = hi >= iv->trims_lost, solid = one_solid(s, seq, iv, v);
         iv->valid[v] = lost;
         bool cracked = false;
         iv->end[v] = iv->end_fp[v] = hi;
@@ -260,6 +228,9 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
                 cracked = true;
             if (lost || seq[i].kind != TV_ENTRY_TRIM || !region_meets(seq, n, i, lo, hi, iv->trims_lost))
                 continue;
+            float mn, mx;
+            if (solid && region_span(seq, n, i, iv->trims_lost, &mn, &mx) > 1 && mn > lo * (float)(1.0 + TV_PVS_SOLID_MARGIN))
+                continue; /* a surface behind the solid's front: it does not erode the solid */
             float u = hi, f = hi;
             if (!pvs_umbra_depth(s, k, seq[i].id, &u, &f) || u < hi)
                 u = hi;
@@ -278,23 +249,6 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
          * front past the edge (an unseen culled back emits nothing) */
         iv->show_back[v] = cracked || is_straddled(&seq[iv->back[v]]);
     }
-}
-
-/* Whether a trim region meets lone back seq[b] (region_meets with the
- * range [b, b]), or a lost trim may: its surface is eroded at this pixel,
- * as a validated interval's is. Giving it a hidden range up to the nearest
- * umbra of those regions, as an interval gets, changed no PVS by more than
- * 0.3 % (2026-11-24), so it has none. */
-static bool lone_eroded(const seq_entry* seq, uint32_t n, uint32_t b, float trims_lost)
-{
-    float d = seq[b].depth;
-    if (d >= trims_lost)
-        return true;
-    for (uint32_t i = 0; i < n; i++) {
-        if (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth < trims_lost && region_meets(seq, n, i, d, d, trims_lost))
-            return true;
-    }
-    return false;
 }
 
 /* The sequence with validated backs replaced by their umbrae (END entries)
@@ -482,8 +436,12 @@ static bool carry_run(pvs_pixel_state* s, const pvs_kbuf* k, const seq_entry* se
 {
     pvs_entry next[TV_K_CARRY];
     uint32_t c = 0;
-    uint32_t run = iv->run < 0 ? n : (uint32_t)iv->run;
-    for (uint32_t i = run; i < n; i++) {
+    uint32_t run = iv->run < 0 ? n : (uint32_t)iv->run, from = run;
+    /* trims in the first front's plane that rounded in front of it (TV_PVS_TIE_LO): carried, moved to it */
+    while (iv->run >= 0 && from > 0 && seq[from - 1].kind == TV_ENTRY_TRIM &&
+           seq[from - 1].depth >= seq[run].depth * (float)TV_PVS_TIE_LO)
+        from--;
+    for (uint32_t i = from; i < n; i++) {
         /* trims behind the nearest lost one: the stand-in below covers them */
         if (is_candidate_back(&seq[i]) || (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth >= iv->trims_lost))
             continue;

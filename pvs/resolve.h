@@ -84,6 +84,9 @@ typedef struct pvs_kbuf {
     /* The same for culled backs (TV_ID_CULLED), kept apart: they enter as
      * TV_ID_PRIOR_CULLED, which closes an interval and does nothing else. */
     float nearest_culled_back;
+    /* The nearest culled back behind the nearest front of its layer (TV_PVS_CENTRE_CULLED_BEHIND), which may close a
+     * prior front whose own back the nearest culled back, a lone one in front of it, is not. */
+    float culled_behind;
     /* Nearest depth of a front (not a candidate) that found the front list
      * full (0: none); pvs_kbuf_push keeps it, as P2's atomicMin does. */
     float front_lost;
@@ -129,6 +132,12 @@ typedef struct pvs_pixel_state {
  * for a front the caller must then keep `id` and ask pvs_spill_output after
  * the resolve. Asserts a valid kind. */
 bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth, uint32_t id);
+
+/* P2's exact pass at a pixel centre (centre_depth, TV_PVS_CENTRE_*): joins a front, back or culled back (id with
+ * TV_ID_CULLED) covering the centre to the nearest of its kind over the earlier faces; INFINITY: none. The caller
+ * stores a layer's fronts before its backs, as P2 draws them, so that a culled back finds its layer's nearest front
+ * (TV_PVS_PRIOR_CULLED_BEHIND). */
+void pvs_centre_store(float centre[TV_PVS_CENTRE_STRIDE], uint32_t kind, float depth, uint32_t id);
 
 /* P2's push of one trim region's fragment (pvs_push_region of
  * pvs_kbuffer.glsl): one entry of two trim depths and the umbra's depth (0:

@@ -190,7 +190,10 @@ void main()
         // it: no visibility-buffer id (the discard keeps those stores), no
         // candidate (the dilated pass does not draw it, pvs_face.vert).
         w *= 1.0 + TV_PVS_CULLED_NUDGE; // behind a coincident front twin
-        atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED], floatBitsToUint(w));
+        uint c = TV_PVS_CENTRE_STRIDE * p;
+        atomicMin(centre_depth[c + TV_PVS_CENTRE_CULLED], floatBitsToUint(w));
+        if (TV_PVS_PRIOR_CULLED_BEHIND(uintBitsToFloat(centre_depth[c + TV_PVS_CENTRE_FRONT]), w))
+            atomicMin(centre_depth[c + TV_PVS_CENTRE_CULLED_BEHIND], floatBitsToUint(w));
         if (!pvs_sealed(p))
             pvs_push(p, TV_PVS_KIND_BACK, w, v_triangle | v_id_flags);
         discard;

@@ -17,7 +17,7 @@
 #include "pvs_common.glsl"
 
 #define SEQ_MAX (2 * (TV_K_CARRY + TV_K_TRIM) + TV_K_FRONT + TV_K_BACK) // two trim depths per region entry
-#define IV_MAX (TV_K_BACK + 2 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 2 : TV_K_FRONT + TV_K_CARRY) // + two prior backs
+#define IV_MAX (TV_K_BACK + 3 < TV_K_FRONT + TV_K_CARRY ? TV_K_BACK + 3 : TV_K_FRONT + TV_K_CARRY) // + three prior backs
 #define SEQ2_MAX (SEQ_MAX + IV_MAX + 2)
 
 struct seq_entry {
@@ -187,13 +187,15 @@ uint gather(bool first)
         const uint inf = 0x7F800000u;
         uint c = TV_PVS_CENTRE_STRIDE * P;
         uint f = centre_depth[c + TV_PVS_CENTRE_FRONT], b = centre_depth[c + TV_PVS_CENTRE_BACK];
-        uint cb = centre_depth[c + TV_PVS_CENTRE_CULLED];
+        uint cb = centre_depth[c + TV_PVS_CENTRE_CULLED], cbb = centre_depth[c + TV_PVS_CENTRE_CULLED_BEHIND];
         if (f < inf && !stored_face(TV_ENTRY_FRONT, f))
             ent[n++] = make_entry(kdepth(f), TV_ENTRY_FRONT, TV_ID_PRIOR, 0);
         if (b < inf && !stored_face(TV_ENTRY_BACK, b))
             ent[n++] = make_entry(kdepth(b), TV_ENTRY_BACK, TV_ID_PRIOR, 0);
         if (cb < inf && !stored_face(TV_ENTRY_BACK, cb))
             ent[n++] = make_entry(kdepth(cb), TV_ENTRY_BACK, TV_ID_PRIOR_CULLED, 0);
+        if (cbb < inf && cbb != cb && !stored_face(TV_ENTRY_BACK, cbb))
+            ent[n++] = make_entry(kdepth(cbb), TV_ENTRY_BACK, TV_ID_PRIOR_CULLED, 0);
     }
     for (uint i = 0u; i < carry_count; i++) {
         float t0, t1;
@@ -237,18 +239,11 @@ void form_intervals(uint n)
     }
 }
 
-bool region_in(uint n, uint id)
-{
-    for (uint j = 0u; j < n; j++)
-        if (ent[j].kind == TV_ENTRY_TRIM && ent[j].id == id)
-            return true;
-    return false;
-}
-
 void validate(uint n)
 {
     for (uint v = 0u; v < iv_count; v++) {
         float lo = ent[iv_first[v]].depth, hi = ent[iv_back[v]].depth;
+        bool solid = one_solid(v);
         bool lost_here = hi >= trims_lost; // a lost trim may validate it, and its umbra be the nearest
         iv_valid[v] = lost_here;
         bool cracked = false;
@@ -260,8 +255,8 @@ void validate(uint n)
                 cracked = true;
         }
         for (uint r = 0u; !lost_here && r < rg_n; r++) { // resolve.c's fragments, a region at a time
-            if (!region_meets(r, lo, hi))
-                continue;
+            if (!region_meets(r, lo, hi) || (solid && rg_count[r] > 1u && rg_mn[r] > lo * (1.0 + TV_PVS_SOLID_MARGIN)))
+                continue; // resolve.c: behind a solid's front
             float u = rg_umbra[r] < hi || isinf(rg_umbra[r]) ? hi : rg_umbra[r];
             float f = isinf(rg_umbra[r]) ? hi : max(rg_umbra_fp[r], hi);
             iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
@@ -431,8 +426,10 @@ void carry_range(uint n)
 bool carry_run(uint n)
 {
     carry_next_count = 0u;
-    uint run = iv_run < 0 ? n : uint(iv_run);
-    for (uint i = run; i < n; i++) {
+    uint run = iv_run < 0 ? n : uint(iv_run), from = run;
+    while (iv_run >= 0 && from > 0u && ent[from - 1u].kind == TV_ENTRY_TRIM && ent[from - 1u].depth >= ent[run].depth * TV_PVS_TIE_LO)
+        from--; // resolve.c: in the first front's plane
+    for (uint i = from; i < n; i++) {
         if (is_candidate_back(ent[i]) || (ent[i].kind == TV_ENTRY_TRIM && ent[i].depth >= trims_lost))
             continue;
         // resolve.c: its fragments in front of the run are not carried

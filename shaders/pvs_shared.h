@@ -74,6 +74,14 @@
  * overflowed (oa:czest2ctf: PVS 2 -> 28 % of the scene). Twice
  * TV_PVS_TRIM_NUDGE, so a trim in the twin's plane still lies inside. */
 #define TV_PVS_CULLED_NUDGE 2e-5
+/* A border edge's single trim lies in its own triangle's plane, often the face the pixel's interval starts at, and
+ * ties with it only up to the rounding of two primitives' interpolated depths (oa:oasago2: 2e-6 of the depth in
+ * front of the front, so the trim neither met the interval nor was carried with its run). A fragment this close in
+ * front of an interval's front counts as inside (region_meets, carry_run). */
+#define TV_PVS_TIE_LO (1.0 - TV_PVS_TRIM_NUDGE)
+/* A region with two or three draws whose nearest fragment lies this fraction of the front's depth behind the front of
+ * a one-solid interval does not validate it (docs/pvs-edge-cases.md, "Regions behind a solid's front"). */
+#define TV_PVS_SOLID_MARGIN 0.1
 /* Raster far plane relative to the PVS far plane (pvs/gpu_compute.c), 1 %
  * further: it kept the umbra quads' far corners, which lie on the latter,
  * when the umbrae had a draw of their own; pvs_quad.frag drops the trim
@@ -247,7 +255,13 @@
 #define TV_PVS_CENTRE_FRONT   0u // slots of a pixel's TV_PVS_BIND_CENTRE_DEPTH entry (P2's exact pass, atomicMin)
 #define TV_PVS_CENTRE_BACK    1u
 #define TV_PVS_CENTRE_CULLED  2u // culled backs (TV_ID_CULLED): they close intervals only
-#define TV_PVS_CENTRE_STRIDE  3u
+// The nearest culled back behind the nearest front at the centre over its layer and the earlier ones (P2 draws a
+// layer's backs after its fronts, a barrier between), which may close that front: the nearest overall is often a
+// lone one in front of every front, and alone it left a front's own back out (merged solids: docs/pvs-edge-cases.md,
+// "Prior faces"). Depths as floats, in C and GLSL.
+#define TV_PVS_CENTRE_CULLED_BEHIND 3u
+#define TV_PVS_PRIOR_CULLED_BEHIND(front, culled) ((culled) > (front))
+#define TV_PVS_CENTRE_STRIDE  4u
 #define TV_PVS_BIND_LOST       21 // TV_PVS_LOST_STRIDE uints per pixel, depth bits: the nearest lost front, lost candidate (P3 replaces it by the candidate spill bound), lost trim
 #define TV_PVS_LOST_FRONT     0u // slots of a pixel's TV_PVS_BIND_LOST entry: what the layer's k-buffer had no room for (P2, atomicMin)
 #define TV_PVS_LOST_CANDIDATE 1u

@@ -6,10 +6,9 @@
 uint32_t harness_pages = HARNESS_MAX_PAGES;
 uint32_t harness_k_exact, harness_k_lists;
 
-/* prior_front / prior_back: P2's nearest front / back depth at the pixel
- * centre over this and the earlier layers (0: none). */
-layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_back, const item* items,
-                                    uint32_t n)
+/* centre: P2's prior faces at the pixel centre over this and the earlier layers (TV_PVS_CENTRE_*; 0: none). */
+static layer_result run_layer_centre(pvs_pixel_state* s, const float centre[TV_PVS_CENTRE_STRIDE], const item* items,
+                                     uint32_t n)
 {
     static uint32_t slots[HARNESS_MAX_PAGES * TV_PVS_PAGE][2], links[HARNESS_MAX_PAGES];
     assert(harness_pages <= HARNESS_MAX_PAGES);
@@ -18,8 +17,10 @@ layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_
     memset(&k, 0, sizeof k);
     k.k_exact = harness_k_exact;
     k.k_lists = harness_k_lists;
-    k.nearest_front = prior_front;
-    k.nearest_back = prior_back;
+    k.nearest_front = centre[TV_PVS_CENTRE_FRONT];
+    k.nearest_back = centre[TV_PVS_CENTRE_BACK];
+    k.nearest_culled_back = centre[TV_PVS_CENTRE_CULLED];
+    k.culled_behind = centre[TV_PVS_CENTRE_CULLED_BEHIND];
     layer_result r = {0};
     for (uint32_t i = 0; i < n; i++) {
         if (!pvs_kbuf_push(&k, &pages, items[i].kind, items[i].depth, items[i].id) && items[i].kind == TV_ENTRY_FRONT)
@@ -36,6 +37,23 @@ layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_
         }
     }
     return r;
+}
+
+layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_back, const item* items, uint32_t n)
+{
+    return run_layer_centre(s, (const float[TV_PVS_CENTRE_STRIDE]){prior_front, prior_back}, items, n);
+}
+
+/* P2's exact pass at the centre: the layer's fronts first (PASS_FRONTS), then its backs, candidates not at all. */
+layer_result run_layer_kept(pvs_pixel_state* s, float centre[TV_PVS_CENTRE_STRIDE], const item* items, uint32_t n)
+{
+    for (uint32_t pass = 0; pass < 2; pass++) {
+        for (uint32_t i = 0; i < n; i++) {
+            if (items[i].kind == (pass ? TV_ENTRY_BACK : TV_ENTRY_FRONT) && !(items[i].id & TV_ID_CANDIDATE))
+                pvs_centre_store(centre, items[i].kind, items[i].depth, items[i].id);
+        }
+    }
+    return run_layer_centre(s, centre, items, n);
 }
 
 layer_result run_layer(pvs_pixel_state* s, const item* items, uint32_t n)

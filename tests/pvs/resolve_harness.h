@@ -51,6 +51,9 @@ extern uint32_t harness_k_lists;
  * pvs_spill_output about the fronts that did not fit. */
 layer_result run_layer_prior(pvs_pixel_state* s, float prior_front, float prior_back, const item* items, uint32_t n);
 layer_result run_layer(pvs_pixel_state* s, const item* items, uint32_t n);
+/* The same with the prior faces P2 keeps from the layers run this way (pvs_centre_store): `centre`, one
+ * TV_PVS_CENTRE_STRIDE entry as the GPU's, all INFINITY before the first layer. */
+layer_result run_layer_kept(pvs_pixel_state* s, float centre[TV_PVS_CENTRE_STRIDE], const item* items, uint32_t n);
 
 /* Output equals exactly the ids in `want` (order free). */
 bool same_set(const layer_result* r, const uint32_t* want, uint32_t n);
@@ -68,5 +71,7 @@ bool same_set(const layer_result* r, const uint32_t* want, uint32_t n);
     run_layer_prior(&(s), f, b, (const item[]){__VA_ARGS__}, sizeof((const item[]){__VA_ARGS__}) / sizeof(item))
 
 #define C(d, id) {TV_ENTRY_FRONT, d, (id) | TV_ID_CANDIDATE}
+#define RUN_KEPT(s, centre, ...)                                                \
+    run_layer_kept(&(s), centre, (const item[]){__VA_ARGS__}, sizeof((const item[]){__VA_ARGS__}) / sizeof(item))
 
 #endif

@@ -408,6 +408,81 @@ static void test_random_sequences_order_free(void)
     TV_CHECK(checked_nearest > 100);
 }
 
+/* oa:oasago2 cell 0, pixel (233, 281) (docs/journal/2026-12-03-dm5fp.md): a lone culled back (10.87, layer 1), a
+ * 0.41 m slab (front 37.49, culled back 37.97: layer 7), then in layer 12 a block's corner (front 62.158, culled back
+ * 62.211) whose convex edge draws region 9021 at 62.159 and 62.184 (umbra 66.38), and a face at 70 behind it. The
+ * prior culled back is the slab's own, so the slab is an interval no region meets and its front seals the pixel.
+ * Kept as the nearest culled back over all layers (10.87, lone), it left the slab's front open: one interval of
+ * both solids, which the corner's region validated, and the face at 70 was carried as seen past the slab. */
+static void test_prior_culled_back_closes_its_front(void)
+{
+    float centre[TV_PVS_CENTRE_STRIDE] = {INFINITY, INFINITY, INFINITY, INFINITY};
+    pvs_pixel_state s = {0};
+    layer_result r = RUN_KEPT(s, centre, BI(10.869f, 7354 | TV_ID_CULLED));
+    CHECK_NONE(r);
+    r = RUN_KEPT(s, centre, F(37.490f, 6615), BI(37.966f, 6811 | TV_ID_CULLED));
+    CHECK_NONE(r);
+    TV_CHECK(s.stencil == TV_STENCIL_UNTRIMMED && centre[TV_PVS_CENTRE_CULLED] == 10.869f &&
+             centre[TV_PVS_CENTRE_CULLED_BEHIND] == 37.966f);
+    r = RUN_KEPT(s, centre, F(62.158f, 5306), T(62.159f, 9021), T(62.184f, 9021), U(66.38f, 9021),
+                 BI(62.211f, 18506 | TV_ID_CULLED), F(70.0f, 17968));
+    CHECK_NONE(r);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 37.490f);
+    /* a culled back before every front of its layer closes none of them */
+    float lone[TV_PVS_CENTRE_STRIDE] = {INFINITY, INFINITY, INFINITY, INFINITY};
+    pvs_pixel_state t = {0};
+    r = RUN_KEPT(t, lone, BI(3.0f, 7 | TV_ID_CULLED), F(4.0f, 8));
+    TV_CHECK(lone[TV_PVS_CENTRE_CULLED] == 3.0f && lone[TV_PVS_CENTRE_CULLED_BEHIND] == INFINITY);
+}
+
+/* A 4 m solid [5, 9] whose only region at the pixel (7: two draws, 6 and 7, umbra 10) lies wholly more than
+ * TV_PVS_SOLID_MARGIN behind its front: the silhouette of a surface behind the front, which does not erode the solid
+ * (docs/pvs-edge-cases.md, "Regions behind a solid's front"). The wall's front seals the pixel and the face at 12,
+ * past the umbra, is not output. Where the sequence cannot tell one solid (a prior front, a second front, a prior
+ * back) or the region may be the solid's own (a single draw, a fragment within the margin), it validates. */
+static void test_region_behind_a_solid_front(void)
+{
+    const uint32_t cb = 2 | TV_ID_CULLED;
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, F(5.0f, 1), T(6.0f, 7), T(7.0f, 7), U(10.0f, 7), BI(9.0f, cb), F(12.0f, 3), B(13.0f));
+    CHECK_OUT(r, 1);
+    TV_CHECK(s.stencil == TV_STENCIL_SEALED && s.term_depth == 5.0f);
+    pvs_pixel_state near = {0};
+    r = RUN(near, F(5.0f, 1), T(5.4f, 7), T(7.0f, 7), U(10.0f, 7), BI(9.0f, cb), F(12.0f, 3), B(13.0f));
+    CHECK_OUT(r, 1, 3);
+    pvs_pixel_state single = {0};
+    r = RUN(single, F(5.0f, 1), T(6.0f, 7), U(10.0f, 7), BI(9.0f, cb), F(12.0f, 3), B(13.0f));
+    CHECK_OUT(r, 1, 3);
+    pvs_pixel_state two = {0};
+    r = RUN(two, F(5.0f, 1), F(5.2f, 4), T(6.0f, 7), T(7.0f, 7), U(10.0f, 7), BI(9.0f, cb), F(12.0f, 3), B(13.0f));
+    CHECK_OUT(r, 1, 4, 3);
+    pvs_pixel_state prior = {0};
+    r = RUN_PRIOR(prior, 5.0f, 0.0f, T(6.0f, 7), T(7.0f, 7), U(10.0f, 7), BI(9.0f, cb), F(12.0f, 3), B(13.0f));
+    CHECK_OUT(r, 3);
+    pvs_pixel_state prior_back = {0};
+    r = RUN_PRIOR(prior_back, 0.0f, 9.0f, F(5.0f, 1), T(6.0f, 7), T(7.0f, 7), U(10.0f, 7), F(12.0f, 3), B(13.0f));
+    CHECK_OUT(r, 1, 3);
+}
+
+/* oa:oasago2 cell 0, pixels (240, 281) and (246, 281), where eyes see triangle 17968 over a ledge: a border edge's
+ * single trim (region 964) lies in the ledge top's plane and rounded 2e-6 of the depth in front of the top (7091), so
+ * in layer 2 it was not carried with the top's open run, and in layer 3 the top and its culled lip (6836) formed an
+ * interval no region met: the top sealed the pixel. Within TV_PVS_TIE_LO of the run's first front it is carried at
+ * that front and validates the ledge; in one layer, region_meets counts it. */
+static void test_trim_tied_with_its_face(void)
+{
+    const uint32_t lip = 6836 | TV_ID_CULLED;
+    pvs_pixel_state s = {0};
+    layer_result r = RUN(s, T(18.134825f, 964), U(21.57f, 964), F(18.134859f, 7091));
+    CHECK_NONE(r);
+    r = RUN(s, BI(18.835060f, lip), F(108.26f, 17968), B(109.0f));
+    CHECK_OUT(r, 7091, 17968);
+    pvs_pixel_state one = {0};
+    r = RUN(one, T(18.134825f, 964), U(21.57f, 964), F(18.134859f, 7091), BI(18.835060f, lip), F(108.26f, 17968),
+            B(109.0f));
+    CHECK_OUT(r, 7091, 17968);
+}
+
 int main(void)
 {
     TV_TEST_RUN(test_candidate_fronts);
@@ -426,5 +501,8 @@ int main(void)
     TV_TEST_RUN(test_fast_paths);
     TV_TEST_RUN(test_lone_back_output);
     TV_TEST_RUN(test_random_sequences_order_free);
+    TV_TEST_RUN(test_prior_culled_back_closes_its_front);
+    TV_TEST_RUN(test_region_behind_a_solid_front);
+    TV_TEST_RUN(test_trim_tied_with_its_face);
     return tv_test_finish();
 }
