@@ -214,7 +214,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
 {
     for (uint32_t v = 0; v < iv->count; v++) {
         float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
-        bool lost = hi >= iv->trims_lost, solid = one_solid(s, seq, iv, v);
+        bool lost = hi >= iv->trims_lost;
         iv->valid[v] = lost;
         bool cracked = false;
         iv->end[v] = iv->end_fp[v] = hi;
@@ -228,9 +228,6 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
                 cracked = true;
             if (lost || seq[i].kind != TV_ENTRY_TRIM || !region_meets(seq, n, i, lo, hi, iv->trims_lost))
                 continue;
-            float mn, mx;
-            if (solid && region_span(seq, n, i, iv->trims_lost, &mn, &mx) > 1 && mn > lo * (float)(1.0 + TV_PVS_SOLID_MARGIN))
-                continue; /* a surface behind the solid's front: it does not erode the solid */
             float u = hi, f = hi;
             if (!pvs_umbra_depth(s, k, seq[i].id, &u, &f) || u < hi)
                 u = hi;

@@ -1,6 +1,6 @@
 /* resolve_regions.h - resolve.c's tests of the trim regions of a pixel's sequence, as
- * shaders/pvs_resolve_regions.glsl has them: whether a region meets an interval or a lone back, whether a
- * region has a fragment in front of a run, and whether an interval may be one solid's. Included by resolve.c
+ * shaders/pvs_resolve_regions.glsl has them: whether a region meets an interval or a lone back, and whether a
+ * region has a fragment in front of a run. Included by resolve.c
  * alone, after its sequence types; static functions. */
 #ifndef TRIMVR_PVS_RESOLVE_REGIONS_H
 #define TRIMVR_PVS_RESOLVE_REGIONS_H
@@ -66,23 +66,6 @@ static bool lone_eroded(const seq_entry* seq, uint32_t n, uint32_t b, float trim
             return true;
     }
     return false;
-}
-
-/* Whether interval v may be the entry and exit of one solid, as far as the sequence tells: its run holds one front
- * (candidates aside), drawn in this layer (not TV_ID_PRIOR, not carried), and its back is no prior face. Necessary,
- * not sufficient (docs/pvs-edge-cases.md, "Regions behind a solid's front"). */
-static bool one_solid(const pvs_pixel_state* s, const seq_entry* seq, const intervals* iv, uint32_t v)
-{
-    uint32_t fronts = 0, f = seq[iv->first[v]].id, b = seq[iv->back[v]].id;
-    for (uint32_t j = iv->first[v]; j <= iv->back[v]; j++)
-        fronts += seq[j].kind == TV_ENTRY_FRONT && !is_candidate(&seq[j]);
-    if (fronts != 1 || f == TV_ID_PRIOR || b == TV_ID_PRIOR || b == TV_ID_PRIOR_CULLED)
-        return false;
-    for (uint32_t i = 0; i < s->carry_count; i++) {
-        if (s->carry[i].kind == TV_ENTRY_FRONT && s->carry[i].id == f)
-            return false;
-    }
-    return true;
 }
 
 #endif

@@ -243,7 +243,6 @@ void validate(uint n)
 {
     for (uint v = 0u; v < iv_count; v++) {
         float lo = ent[iv_first[v]].depth, hi = ent[iv_back[v]].depth;
-        bool solid = one_solid(v);
         bool lost_here = hi >= trims_lost; // a lost trim may validate it, and its umbra be the nearest
         iv_valid[v] = lost_here;
         bool cracked = false;
@@ -255,8 +254,8 @@ void validate(uint n)
                 cracked = true;
         }
         for (uint r = 0u; !lost_here && r < rg_n; r++) { // resolve.c's fragments, a region at a time
-            if (!region_meets(r, lo, hi) || (solid && rg_count[r] > 1u && rg_mn[r] > lo * (1.0 + TV_PVS_SOLID_MARGIN)))
-                continue; // resolve.c: behind a solid's front
+            if (!region_meets(r, lo, hi))
+                continue;
             float u = rg_umbra[r] < hi || isinf(rg_umbra[r]) ? hi : rg_umbra[r];
             float f = isinf(rg_umbra[r]) ? hi : max(rg_umbra_fp[r], hi);
             iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;

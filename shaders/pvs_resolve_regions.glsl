@@ -1,5 +1,5 @@
 // pvs_resolve_regions.glsl - pvs/resolve_regions.h: region_meets over a table of the
-// trim sequence's regions, region_in and one_solid; included by pvs_resolve.glsl after umbra_depth.
+// trim sequence's regions and region_in; included by pvs_resolve.glsl after umbra_depth.
 // resolve.c scans the whole sequence for a region's fragments at every call,
 // and validate and lone_eroded call it per fragment (with umbra_depth's scan
 // of the umbrae inside): cubic in the sequence, which spent llvmpipe's loop
@@ -61,21 +61,6 @@ bool region_in(uint n, uint id)
         if (ent[j].kind == TV_ENTRY_TRIM && ent[j].id == id)
             return true;
     return false;
-}
-
-// resolve.c's one_solid: one front of this layer, no prior back.
-bool one_solid(uint v)
-{
-    uint fronts = 0u, f = ent[iv_first[v]].id, b = ent[iv_back[v]].id;
-    for (uint j = iv_first[v]; j <= iv_back[v]; j++)
-        if (ent[j].kind == TV_ENTRY_FRONT && !is_candidate(ent[j]))
-            fronts++;
-    if (fronts != 1u || f == TV_ID_PRIOR || b == TV_ID_PRIOR || b == TV_ID_PRIOR_CULLED)
-        return false;
-    for (uint i = 0u; i < carry_count; i++)
-        if (carry[i].kind == TV_ENTRY_FRONT && carry[i].id == f)
-            return false;
-    return true;
 }
 
 #endif

@@ -79,9 +79,6 @@
  * front of the front, so the trim neither met the interval nor was carried with its run). A fragment this close in
  * front of an interval's front counts as inside (region_meets, carry_run). */
 #define TV_PVS_TIE_LO (1.0 - TV_PVS_TRIM_NUDGE)
-/* A region with two or three draws whose nearest fragment lies this fraction of the front's depth behind the front of
- * a one-solid interval does not validate it (docs/pvs-edge-cases.md, "Regions behind a solid's front"). */
-#define TV_PVS_SOLID_MARGIN 0.1
 /* Raster far plane relative to the PVS far plane (pvs/gpu_compute.c), 1 %
  * further: it kept the umbra quads' far corners, which lie on the latter,
  * when the umbrae had a draw of their own; pvs_quad.frag drops the trim
