@@ -49,8 +49,6 @@ void regions_build(uint n)
     // P3 at pixels whose region list is long (docs/journal/2026-12-03-ovf30.md)
     for (uint r = 0u; r < rg_n; r++)
         rg_umbra[r] = rg_umbra_fp[r] = inf;
-    if (deep_pixel())
-        return;
     uvec2 a, b;
     for (kb_regions c = kb_open_regions(); kb_next_region(c, a, b);) {
         uint r = b.x != 0u ? rg_find(a.y) : rg_n;
@@ -63,6 +61,8 @@ void regions_build(uint n)
         if (r < rg_n && carry_umbra(carry[i], carry[i].id, u))
             umbra_min(u, rg_umbra[r], rg_umbra_fp[r]);
     }
+    for (uint r = 0u; deep_pixel() && r < rg_n; r++)
+        rg_umbra[r] = rg_umbra_fp[r]; // umbra_depth
 }
 
 // resolve.c's region_meets for region r of the table: its fragments overlap
