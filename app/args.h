@@ -38,7 +38,7 @@ typedef enum tv_args_result {
 #define TV_ARG_METHOD(out) {"method", TV_ARG_STRING, (out), "M", "PVS method: tr, gt, sas, frompoint or q3vis (default tr)"}
 #define TV_ARG_K(out) {"k", TV_ARG_INT, (out), "N", "tr: k-buffer slots per pixel and kind, >= 1 (default 16)"}
 #define TV_ARG_K_REGIONS(out) {"k-regions", TV_ARG_INT, (out), "N", "tr: entries the region list stores; one longer than k alone resolves with all of them, umbrae included, not as overflow (default 0: k-deep; at most 32)"}
-#define TV_ARG_K_DEEP(out) {"k-deep", TV_ARG_INT, (out), "N", "tr: entries each list stores; a pixel with more than k in its front or back list resolves without umbrae, not as overflow, up to N (default 0: k; at most 32)"}
+#define TV_ARG_K_DEEP(out) {"k-deep", TV_ARG_INT, (out), "N", "tr: entries each list stores; a pixel with more than k in its front or back list resolves with its umbrae ended at their footprints, not as overflow, up to N (default 0: k; at most 32)"}
 #define TV_ARG_PVS_RES(name, out) {(name), TV_ARG_RES, (out), "WxH", "tr: PVS resolution (default 512x512)"}
 #define TV_ARG_FOV_PVS(out) {"fov-pvs", TV_ARG_FLOAT, (out), "DEG", "PVS FOV, square frustum (default 90)"}
 #define TV_ARG_MAX_LAYERS(out) {"max-layers", TV_ARG_INT, (out), "N", "tr: merge octree layers into at most N (default -1: 14 on a GPU, never on a CPU device; 0: never)"}

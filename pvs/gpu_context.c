@@ -22,7 +22,8 @@
 /* Larger images are tiled; the largest per-pixel buffer, the carry, then
  * takes at most 256 MiB (lavapipe's maxStorageBufferRange allows half). */
 #define PVS_DEFAULT_TILE_PIXELS (1024u * 1024u)
-/* The flat k-buffer layout keeps every list's k slots: 128 MiB at k = 16. */
+/* The flat k-buffer layout keeps every list's k slots: 128 MiB at k = 16, in two buffers
+ * of 64 MiB (flat_pages_per_pixel), so k = 32 still fits one tile. */
 #define PVS_DEFAULT_FLAT_TILE_PIXELS (512u * 512u)
 /* The k-buffer pool starts at this many pages per tile pixel, whatever k
  * (most lists hold 0-2 entries; docs/pvs-gpu-passes.md, "k-buffer pages"),
@@ -144,8 +145,8 @@ static uint32_t pages_asked(const pvs_context* ctx, uint32_t layer)
 
 static uint64_t kbuffer_bytes(const pvs_context* ctx)
 {
-    return ctx->buffers[TV_PVS_BIND_KPOOL].size + ctx->buffers[TV_PVS_BIND_KLINKS].size +
-           ctx->buffers[TV_PVS_BIND_KHEADS].size;
+    return ctx->buffers[TV_PVS_BIND_KPOOL].size + ctx->buffers[TV_PVS_BIND_KREGIONS].size +
+           ctx->buffers[TV_PVS_BIND_KLINKS].size + ctx->buffers[TV_PVS_BIND_KHEADS].size;
 }
 
 void pvs_kbuffer_stats(const pvs_context* ctx, pvs_stats* st)
@@ -228,6 +229,7 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_LAYER_TRIS, drawn * 4},
         {TV_PVS_BIND_COUNTERS, TV_PVS_C_COUNT * 4},
         {TV_PVS_BIND_KPOOL, (VkDeviceSize)ctx->pool_pages * TV_PVS_PAGE * 8},
+        {TV_PVS_BIND_KREGIONS, ctx->kb_paged ? 8 : (VkDeviceSize)ctx->pool_pages * TV_PVS_PAGE * 8}, /* paged: unused */
         {TV_PVS_BIND_KHEADS, ctx->kb_paged ? pixels * TV_PVS_LISTS * 4 : 4}, /* flat: unused */
         {TV_PVS_BIND_KLINKS, ctx->kb_paged ? (VkDeviceSize)ctx->pool_pages * 4 : 4},
         {TV_PVS_BIND_PIXCOUNT, pixels * 16},
@@ -390,11 +392,12 @@ static uint32_t coop_width(const rnd_context* rnd)
     return sub.subgroupSize < 4 ? 4 : sub.subgroupSize > 128 ? 128 : sub.subgroupSize;
 }
 
-/* The flat layout's pages per pixel: every list holds k_store slots, as the layout
- * before the pool had it. */
+/* The flat layout's pages per pixel in each of its two buffers (kb_flat_page): every list
+ * holds k_store slots, as the layout before the pool had it; the front and back lists in
+ * the pool, the trim and umbra lists (the region list) in TV_PVS_BIND_KREGIONS. */
 static uint32_t flat_pages_per_pixel(const pvs_context* ctx)
 {
-    return TV_PVS_LISTS * ((ctx->k_store + TV_PVS_PAGE - 1) / TV_PVS_PAGE);
+    return TV_PVS_LISTS / 2 * ((ctx->k_store + TV_PVS_PAGE - 1) / TV_PVS_PAGE);
 }
 
 /* The paged pool's first and largest size (its slots fit one storage
@@ -415,7 +418,7 @@ static void size_pool(pvs_context* ctx, const pvs_desc* d)
 
 /* The tile grid: at most `max_tile_pixels` pixels (0: the default) per tile
  * and no per-pixel buffer over maxStorageBufferRange (the largest per pixel
- * is the carry, or the flat layout's pool: 512 B at k = 16). */
+ * is the carry, or each of the flat layout's two buffers: 256 B at k = 16). */
 static pvs_tile_grid tile_grid(const pvs_context* ctx, uint32_t max_tile_pixels)
 {
     uint64_t per_pixel = (uint64_t)TV_K_CARRY * 16;

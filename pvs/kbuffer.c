@@ -307,8 +307,6 @@ float pvs_umbra_pack(float centre, float footprint)
 
 bool pvs_umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth, float* footprint)
 {
-    if (pvs_kbuf_deep(k))
-        return false;
     float nearest = INFINITY, fp = INFINITY, u;
     for (uint32_t i = 0; i < k->umbra_held + s->carry_count; i++) {
         if (i < k->umbra_held) { /* this layer's, then the carried ones */
@@ -323,7 +321,7 @@ bool pvs_umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t regio
     }
     if (nearest == INFINITY)
         return false;
-    *depth = nearest;
+    *depth = pvs_kbuf_deep(k) ? fp : nearest;
     *footprint = fp;
     return true;
 }

@@ -48,7 +48,7 @@ typedef struct pvs_desc {
     uint32_t width, height;          /* PVS resolution; 0: 512 x 512 */
     uint32_t k;                      /* k-buffer slots per pixel and kind, 1..PVS_K_MAX; 0: 16 */
     uint32_t k_deep;                 /* entries stored per list, k..PVS_K_MAX (below k: k): a pixel with a front
-                                        or back list longer than k that fits resolves without umbrae, not as overflow
+                                        or back list longer than k that fits hides to its umbrae's footprints, not as overflow
                                         (docs/trim-regions.md, "Overflow policy") */
     uint32_t k_regions;              /* entries the region list stores, k_deep..PVS_K_MAX (below: k_deep): one
                                         longer than k alone resolves with all of them, umbrae included, not as

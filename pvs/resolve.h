@@ -159,9 +159,9 @@ float pvs_umbra_centre(float packed);
 float pvs_umbra_footprint(float packed);
 
 /* A deep pixel: k_exact set, a front or back list longer than it, none past
- * its capacity (docs/trim-regions.md, "Overflow policy"). Its umbrae count
- * for nothing, as they end where the centre ray leaves them and some of its
- * many faces lie nearer the edge; a region list longer than k_exact alone
+ * its capacity (docs/trim-regions.md, "Overflow policy"). Its umbrae end at
+ * their footprints (pvs_umbra_depth), as where the centre ray leaves them some
+ * of its many faces lie nearer the edge; a region list longer than k_exact alone
  * does not make a pixel deep: its faces are as few as a shallow pixel's,
  * and it keeps its umbrae (docs/journal/2026-12-03-regovf.md). */
 bool pvs_kbuf_deep(const pvs_kbuf* kbuf);
@@ -236,9 +236,12 @@ bool pvs_carry_umbra(const pvs_entry* e, uint32_t id, float* depth);
 
 /* Depth of the umbra of trim region `region` at this pixel (nearest if it
  * was rasterised more than once), from this layer or carried (resolve.c's
- * validate and carry_run), and the nearest of its footprints. None at a deep
- * pixel: an umbra ends where the pixel's centre ray leaves it, and where many
- * faces lie behind an occluder, some are seen nearer its edge (trim-regions.md). */
+ * validate and carry_run), and the nearest of its footprints. At a deep
+ * pixel the footprint is its depth too: an umbra ends where the pixel's
+ * centre ray leaves it, and where many faces lie behind an occluder, some
+ * are seen nearer its edge (trim-regions.md); none ends nearer than its
+ * footprint, two pixels' width around the centre (dropping them grew
+ * czest2ctf's PVS 7 %: docs/journal/2026-12-03-ovf30.md). */
 bool pvs_umbra_depth(const pvs_pixel_state* s, const pvs_kbuf* k, uint32_t region, float* depth, float* footprint);
 
 #ifdef __cplusplus

@@ -29,16 +29,20 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_VIEW) readonly buffer pvs
 // page j of a pixel's list is found. PAGED: through the list's head and the
 // pages' links (pvs_kbuffer.glsl, pvs_follow). FLAT: page j of list l of
 // pixel p is kb_flat_page(p, l) + j, every list holding k slots; no
-// allocation, no heads or links.
+// allocation, no heads or links. The front and back lists' pages are in
+// kpool, the region list's (trim and umbra lists) in kregions: each buffer
+// then takes half of the four lists, so that k = 32 fits one tile of
+// 512x512 under lavapipe's maxStorageBufferRange (docs/journal/2026-12-03-ovf30.md).
 layout(constant_id = TV_PVS_SPEC_KB_PAGED) const bool KB_PAGED = true;
 
 // Page + 1 (as heads and links hold pages) of the first page of list `list`
-// of pixel p in the FLAT layout: each list in a region of its own, pixel by
-// pixel, as the four buffers before the pool had it (a pixel's four lists
-// side by side made P2 some 10 % slower on llvmpipe).
+// of pixel p in the FLAT layout, in kpool (lists 0, 1) or kregions (2, 3):
+// each list in a region of its own, pixel by pixel, as the four buffers
+// before the pool had it (a pixel's four lists side by side made P2 some
+// 10 % slower on llvmpipe).
 uint kb_flat_page(uint p, uint list)
 {
-    return (list * view.tile_w * view.tile_h + p) * ((view.k + TV_PVS_PAGE - 1u) / TV_PVS_PAGE) + 1u;
+    return ((list & 1u) * view.tile_w * view.tile_h + p) * ((view.k + TV_PVS_PAGE - 1u) / TV_PVS_PAGE) + 1u;
 }
 
 // Entries each list holds before it overflows: front, back, region list, and
@@ -52,6 +56,7 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_BF) PVS_RW buffer pvs_bf_
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_SIL) PVS_RW buffer pvs_sil_buf { vec4 sil[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_COUNTERS) PVS_RW coherent buffer pvs_counter_buf { uint counters[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KPOOL) PVS_RW buffer pvs_kpool_buf { uvec2 kpool[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KREGIONS) PVS_RW buffer pvs_kregions_buf { uvec2 kregions[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KHEADS) PVS_RW coherent buffer pvs_kheads_buf { uint kheads[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KLINKS) PVS_RW coherent buffer pvs_klinks_buf { uint klinks[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_KALLOC) PVS_RW coherent buffer pvs_kalloc_buf { uint kalloc[]; };

@@ -76,7 +76,11 @@ uint pvs_follow(bool head, uint at)
 bool pvs_store(uint p, uint list, uint slot, uvec2 e)
 {
     if (!KB_PAGED) { // cannot run out
-        kpool[TV_PVS_PAGE * (kb_flat_page(p, list) - 1u) + slot] = e;
+        uint at = TV_PVS_PAGE * (kb_flat_page(p, list) - 1u) + slot;
+        if (list < 2u)
+            kpool[at] = e;
+        else
+            kregions[at] = e;
         return true;
     }
     uint page = pvs_follow(true, TV_PVS_LISTS * p + list);

@@ -6,14 +6,17 @@
 
 // A walk over list `list` of the pixel (TV_PVS_LISTS order) through its
 // pages: its first min(count, k) slots, skipping holes (entries the pool
-// had no page for; their chain may also end early).
+// had no page for; their chain may also end early). regions: FLAT's
+// kregions holds its pages (kb_flat_page).
 struct kb_cursor {
     uint page, slot, end;
+    bool regions;
 };
 
 kb_cursor kb_open(uint list)
 {
-    return kb_cursor(KB_PAGED ? kheads[TV_PVS_LISTS * P + list] : kb_flat_page(P, list), 0u, min(cnt[list], view.k_lists)); // the region lists: kb_open_regions
+    return kb_cursor(KB_PAGED ? kheads[TV_PVS_LISTS * P + list] : kb_flat_page(P, list), 0u, min(cnt[list], view.k_lists), // the region lists: kb_open_regions
+                     !KB_PAGED && list >= 2u);
 }
 
 // The cursor's next slot, a hole or not (past the end of a chain cut short,
@@ -23,8 +26,9 @@ bool kb_read(inout kb_cursor c, out uvec2 e)
     e = uvec2(TV_PVS_HOLE, 0u);
     if (c.slot >= c.end)
         return false;
+    uint at = TV_PVS_PAGE * (c.page - 1u) + c.slot % TV_PVS_PAGE;
     if (c.page != TV_PVS_NO_PAGE)
-        e = kpool[TV_PVS_PAGE * (c.page - 1u) + c.slot % TV_PVS_PAGE];
+        e = c.regions ? kregions[at] : kpool[at];
     if (++c.slot % TV_PVS_PAGE == 0u && c.page != TV_PVS_NO_PAGE)
         c.page = KB_PAGED ? klinks[c.page - 1u] : c.page + 1u;
     return true;

@@ -149,8 +149,6 @@ void umbra_min(float u, inout float nearest, inout float fp) { nearest = min(nea
 
 bool umbra_depth(uint region, inout float depth, inout float footprint)
 {
-    if (deep_pixel())
-        return false;
     const float inf = uintBitsToFloat(0x7F800000u);
     float nearest = inf, fp = inf;
     uvec2 a, b;
@@ -164,7 +162,7 @@ bool umbra_depth(uint region, inout float depth, inout float footprint)
     }
     if (nearest == inf)
         return false;
-    depth = nearest;
+    depth = deep_pixel() ? fp : nearest;
     footprint = fp;
     return true;
 }

@@ -16,6 +16,14 @@ uint rg_id[RG_MAX], rg_count[RG_MAX]; // fragments in front of trims_lost
 float rg_mn[RG_MAX], rg_mx[RG_MAX];
 float rg_umbra[RG_MAX], rg_umbra_fp[RG_MAX]; // umbra_depth's answers, +inf: none
 
+uint rg_find(uint id)
+{
+    uint r = 0u;
+    while (r < rg_n && rg_id[r] != id)
+        r++;
+    return r;
+}
+
 // The regions of the trims of ent[0, n) in front of trims_lost (set first).
 void regions_build(uint n)
 {
@@ -24,9 +32,7 @@ void regions_build(uint n)
     for (uint i = 0u; i < n; i++) {
         if (ent[i].kind != TV_ENTRY_TRIM || !(ent[i].depth < trims_lost))
             continue;
-        uint r = 0u;
-        while (r < rg_n && rg_id[r] != ent[i].id)
-            r++;
+        uint r = rg_find(ent[i].id);
         if (r == rg_n) {
             rg_id[r] = ent[i].id;
             rg_count[r] = 0u;
@@ -38,11 +44,25 @@ void regions_build(uint n)
         rg_mx[r] = max(rg_mx[r], ent[i].depth);
         rg_count[r]++;
     }
-    for (uint r = 0u; r < rg_n; r++) {
-        float u = inf, f = inf;
-        rg_umbra[r] = umbra_depth(rg_id[r], u, f) ? u : inf;
-        rg_umbra_fp[r] = f;
+    // umbra_depth's answers for all regions in one walk of the list and the
+    // carry: a walk per region was quadratic in the list, the dearest part of
+    // P3 at pixels whose region list is long (docs/journal/2026-12-03-ovf30.md)
+    for (uint r = 0u; r < rg_n; r++)
+        rg_umbra[r] = rg_umbra_fp[r] = inf;
+    uvec2 a, b;
+    for (kb_regions c = kb_open_regions(); kb_next_region(c, a, b);) {
+        uint r = b.x != 0u ? rg_find(a.y) : rg_n;
+        if (r < rg_n)
+            umbra_min(kdepth(b.x), rg_umbra[r], rg_umbra_fp[r]);
     }
+    for (uint i = 0u; i < carry_count; i++) {
+        uint r = rg_find(carry[i].id);
+        float u = inf;
+        if (r < rg_n && carry_umbra(carry[i], carry[i].id, u))
+            umbra_min(u, rg_umbra[r], rg_umbra_fp[r]);
+    }
+    for (uint r = 0u; deep_pixel() && r < rg_n; r++)
+        rg_umbra[r] = rg_umbra_fp[r]; // umbra_depth
 }
 
 // resolve.c's region_meets for region r of the table: its fragments overlap

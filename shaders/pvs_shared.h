@@ -275,7 +275,8 @@
 #define TV_PVS_ORDER_SIL(i)        (i)                       // the layer's silhouette list: record slot of entry i (P2's quads)
 #define TV_PVS_ORDER_CLASS(cap, i) (3u * (cap) + (i))       // layer triangle i's TV_PVS_CLASS_* bits
 #define TV_PVS_ORDER_GROUP(cap, g) (4u * (cap) + 4u * (g))  // P1 workgroup g: FF, BF, record counts (cleared per layer), then offsets and first region id
-#define TV_PVS_BINDINGS        26
+#define TV_PVS_BIND_KREGIONS   26 // FLAT: the region list's pages (trim and umbra lists); KPOOL holds the fronts' and backs'
+#define TV_PVS_BINDINGS        27
 
 // Class word of a layer triangle (TV_PVS_ORDER_CLASS): which of P1's lists
 // it enters, a back's flags, and which of its edges emitted a silhouette

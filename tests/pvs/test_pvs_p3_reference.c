@@ -15,7 +15,8 @@
  * short, counters marked lost), and a few stored slots are punched into
  * holes; both sides read them back through the pages. Run in both k-buffer
  * layouts: for the flat one the C pool's chains are laid out in advance
- * where the GPU's flat addressing finds them (kb_flat_page), so the C
+ * where the GPU's flat addressing finds them (kb_flat_page: the front and back
+ * lists in the pool, the trim and umbra lists in TV_PVS_BIND_KREGIONS, after it in the C pool), so the C
  * reference's paged addressing stands for both. Then once with every list
  * (nearly) full, per thread as lavapipe runs P3: llvmpipe's loop budget
  * (pvs_common.glsl) must last, which it did not while validate was cubic
@@ -204,7 +205,7 @@ static uint32_t state_w(const pvs_pixel_state* st)
 /* Host-visible copies of the buffers this test writes or reads. */
 static bool make_host_visible(pvs_context* ctx)
 {
-    const uint32_t bindings[] = {TV_PVS_BIND_KPOOL, TV_PVS_BIND_KHEADS, TV_PVS_BIND_KLINKS, TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE,
+    const uint32_t bindings[] = {TV_PVS_BIND_KPOOL, TV_PVS_BIND_KREGIONS, TV_PVS_BIND_KHEADS, TV_PVS_BIND_KLINKS, TV_PVS_BIND_PIXCOUNT, TV_PVS_BIND_PIXSTATE,
                                  TV_PVS_BIND_CARRY, TV_PVS_BIND_ACTIVE_LIST, TV_PVS_BIND_CENTRE_DEPTH,
                                  TV_PVS_BIND_LOST, TV_PVS_BIND_ACTIVE};
     char err[256];
@@ -371,13 +372,16 @@ static void check(uint32_t coop_sort_min, pvs_kbuffer_layout layout, const char*
                            : NULL;
     case_data* c = malloc(sizeof *c);
     uint32_t(*heads)[TV_PVS_LISTS] = malloc(sizeof *heads * PIXELS);
-    uint32_t* flat_links = ctx ? malloc(sizeof *flat_links * ctx->pool_pages) : NULL;
-    TV_CHECK(ctx && c && heads && flat_links && make_host_visible(ctx));
-    if (ctx && c && heads && flat_links) {
+    const uint32_t all_pages = PIXELS * TV_PVS_LISTS * K / TV_PVS_PAGE;
+    uint32_t* flat_links = malloc(sizeof *flat_links * all_pages);
+    uint32_t(*flat_slots)[2] = malloc(sizeof *flat_slots * TV_PVS_PAGE * all_pages);
+    TV_CHECK(ctx && c && heads && flat_links && flat_slots && make_host_visible(ctx));
+    if (ctx && c && heads && flat_links && flat_slots) {
         bool flat = layout == PVS_KBUFFER_FLAT;
-        TV_CHECK(ctx->kb_paged == !flat && ctx->pool_pages == PIXELS * TV_PVS_LISTS * K / TV_PVS_PAGE);
-        pvs_kpages pages = {ctx->buffers[TV_PVS_BIND_KPOOL].mapped,
-                            flat ? flat_links : ctx->buffers[TV_PVS_BIND_KLINKS].mapped, ctx->pool_pages, 0};
+        /* flat: the pool and TV_PVS_BIND_KREGIONS, half of the four lists each */
+        TV_CHECK(ctx->kb_paged == !flat && ctx->pool_pages == (flat ? all_pages / 2 : all_pages));
+        pvs_kpages pages = {flat ? flat_slots : ctx->buffers[TV_PVS_BIND_KPOOL].mapped,
+                            flat ? flat_links : ctx->buffers[TV_PVS_BIND_KLINKS].mapped, all_pages, 0};
         if (flat)
             lay_out_flat(&pages, heads);
         uint32_t lost = 0;
@@ -387,7 +391,12 @@ static void check(uint32_t coop_sort_min, pvs_kbuffer_layout layout, const char*
             store_pixel(&raw, umbrae, &pages, flat ? heads[p] : NULL, &c->kbuf[p]);
             lost += (c->kbuf[p].front_count | c->kbuf[p].trim_count) >= TV_PVS_COUNT_LOST;
         }
-        TV_CHECK(lost > PIXELS / 32 && pages.taken < ctx->pool_pages && (!flat || pages.taken == 0));
+        TV_CHECK(lost > PIXELS / 32 && pages.taken < all_pages && (!flat || pages.taken == 0));
+        if (flat) {
+            size_t half = sizeof *flat_slots * TV_PVS_PAGE * (all_pages / 2);
+            memcpy(ctx->buffers[TV_PVS_BIND_KPOOL].mapped, flat_slots, half);
+            memcpy(ctx->buffers[TV_PVS_BIND_KREGIONS].mapped, flat_slots + TV_PVS_PAGE * (all_pages / 2), half);
+        }
         upload(ctx, c);
         TV_CHECK(run_p3(ctx));
         const uint32_t* counters = ctx->buffers[TV_PVS_BIND_COUNTERS].mapped;
@@ -398,6 +407,7 @@ static void check(uint32_t coop_sort_min, pvs_kbuffer_layout layout, const char*
         TV_CHECK(bad == 0 && spent == 0);
         TV_CHECK(coop_sort_min == UINT32_MAX ? coop == 0 : coop > PIXELS / 4);
     }
+    free(flat_slots);
     free(flat_links);
     free(heads);
     free(c);

@@ -454,6 +454,28 @@ static void test_trim_tied_with_its_face(void)
     CHECK_OUT(r, 7091, 17968);
 }
 
+/* A deep pixel (four fronts, k_exact 3) hides up to its umbrae's
+ * footprints (pvs_umbra_pack), not where the centre ray leaves them: with
+ * region 1's footprint at 2.2 F 2's interval starts inside the umbra and
+ * seals unseen; at 1.8 F 2 is seen past its edge and output as the
+ * terminator. A shallow pixel hides it either way (the centre, 3); dropping
+ * the umbrae gave {1, 2} both times. */
+static void test_deep_pixel_umbra_footprint(void)
+{
+    for (uint32_t c = 0; c < 3; c++) {
+        harness_k_exact = c < 2 ? 3 : 0;
+        pvs_pixel_state s = {0};
+        layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(pvs_umbra_pack(3.0f, c == 1 ? 1.8f : 2.2f), 1),
+                             F(2.0f, 2), B(2.5f), F(5.0f, 3), B(6.0f), F(8.0f, 4));
+        TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_SEALED && s.term_depth == 2.0f);
+        if (c == 1)
+            CHECK_OUT(r, 1, 2);
+        else
+            CHECK_OUT(r, 1);
+    }
+    harness_k_exact = 0;
+}
+
 int main(void)
 {
     TV_TEST_RUN(test_candidate_fronts);
@@ -474,5 +496,6 @@ int main(void)
     TV_TEST_RUN(test_random_sequences_order_free);
     TV_TEST_RUN(test_prior_culled_back_closes_its_front);
     TV_TEST_RUN(test_trim_tied_with_its_face);
+    TV_TEST_RUN(test_deep_pixel_umbra_footprint);
     return tv_test_finish();
 }

@@ -177,17 +177,18 @@ static void test_overflow_umbra_list(void)
     TV_CHECK(s.stencil == TV_STENCIL_SEALED);
 }
 
-/* A deep pixel (a list longer than k_exact, none past its capacity) resolves
- * without umbrae: [2, 2.5], validated, lies inside region 1's umbra and is
- * hidden at a shallow pixel; at a deep one only [1, 1.5] itself is hidden,
- * and 2 is output. F 5 terminates both. A pixel whose front list overflows
- * behind that terminator is not deep: 2 stays hidden. */
-static void test_deep_pixel_without_umbrae(void)
+/* A deep pixel (a list longer than k_exact, none past its capacity) hides up
+ * to its umbrae's footprints: [2, 2.5], validated, lies inside region 1's
+ * umbra (3) and is hidden at a shallow pixel; at a deep one its footprint
+ * (1.8) ends in front of it, and 2 is output. F 5 terminates both. A pixel
+ * whose front list overflows behind that terminator is not deep: 2 stays hidden. */
+static void test_deep_pixel_umbrae_at_footprints(void)
 {
+    float fp = pvs_umbra_pack(3.0f, 1.8f);
     for (uint32_t k_exact = 3; k_exact >= 2; k_exact--) {
         harness_k_exact = k_exact;
         pvs_pixel_state s = {0};
-        layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
+        layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(fp, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
                              U(4.0f, 2), F(5.0f, 3), B(6.0f));
         TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_SEALED);
         if (k_exact == 3)
@@ -195,7 +196,7 @@ static void test_deep_pixel_without_umbrae(void)
         else
             CHECK_OUT(r, 1, 2, 3);
     }
-    item items[TV_K_FRONT + 10] = {F(1.0f, 1), T(1.2f, 1), B(1.5f), U(3.0f, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
+    item items[TV_K_FRONT + 10] = {F(1.0f, 1), T(1.2f, 1), B(1.5f), U(fp, 1), F(2.0f, 2), T(2.2f, 2), B(2.5f),
                                    U(4.0f, 2), F(5.0f, 3), B(6.0f)};
     for (uint32_t i = 10; i < TV_K_FRONT + 10; i++)
         items[i] = (item)F(7.0f + (float)i, 100 + i);
@@ -207,7 +208,7 @@ static void test_deep_pixel_without_umbrae(void)
 }
 
 /* A pixel deep by its region list alone keeps its umbrae: the fronts and
- * backs of test_deep_pixel_without_umbrae's shallow pixel (k_exact 3) with
+ * backs of test_deep_pixel_umbrae_at_footprints's shallow pixel (k_exact 3) with
  * two regions in front of them that meet no interval, so four region
  * entries: as shallow, [2, 2.5] lies in region 1's umbra and is hidden.
  * With the front and back lists holding 3 (pvs_desc.k_regions past k_deep)
@@ -574,7 +575,7 @@ int main(void)
     TV_TEST_RUN(test_lost_candidates_in_span);
     TV_TEST_RUN(test_spill_span_ends_at_footprint);
     TV_TEST_RUN(test_overflow_umbra_list);
-    TV_TEST_RUN(test_deep_pixel_without_umbrae);
+    TV_TEST_RUN(test_deep_pixel_umbrae_at_footprints);
     TV_TEST_RUN(test_deep_pixel_drops_carried_range);
     TV_TEST_RUN(test_deep_by_regions_keeps_umbrae);
     TV_TEST_RUN(test_overflow_trim_list);
