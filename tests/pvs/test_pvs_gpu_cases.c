@@ -397,6 +397,38 @@ static void test_culled_twin_of_a_wall(void)
     fixture_close(&f);
 }
 
+/* The same wall with its twin's corners exactly on its own (OpenArena's
+ * fog sheet, docs/journal/2026-12-03-czfp.md), so the four triangles share
+ * the quad's diagonal, and small open quads far behind it along the
+ * diagonal's shadow. As a non-manifold edge the diagonal was a silhouette,
+ * its trim region eroded the wall along it, and the quads behind that
+ * region's umbra were output; paired into two flat sheets
+ * (scn_pair_sheets) it is none, and the wall hides them all. */
+static void test_twinned_wall_diagonal(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    const float wall[4][3] = {{-2.0f, -1.5f, -4.0f}, {2.0f, -1.5f, -4.0f}, {2.0f, 1.5f, -4.0f}, {-2.0f, 1.5f, -4.0f}};
+    const float twin[4][3] = {{-2.0f, -1.5f, -4.0f}, {-2.0f, 1.5f, -4.0f}, {2.0f, 1.5f, -4.0f}, {2.0f, -1.5f, -4.0f}};
+    fx_quad(&f.scene, wall, m); /* faces v* */
+    fx_quad(&f.scene, twin, m);
+    uint32_t first = f.scene.triangle_count;
+    const float depths[7] = {6.0f, 10.0f, 15.0f, 20.0f, 30.0f, 45.0f, 60.0f};
+    for (int i = 0; i < 7; i++) {
+        for (int j = -1; j <= 1; j++) {
+            float s = depths[i] / 4.0f, x = 1.2f * (float)j * s, y = 0.9f * (float)j * s, h = 0.1f * s;
+            fx_quad_z(&f.scene, x - h, y - h, x + h, y + h, -depths[i], m);
+        }
+    }
+    pvs_result r;
+    pvs_viewcell vc;
+    compute_at_origin(&f, 0.1f, &vc, &r);
+    printf("  quads behind the wall in the PVS: %u of 42\n", count_in_range(&r, first, 42));
+    TV_CHECK(count_in_range(&r, first, 42) == 0);
+    check_fn(&f, &r, &vc, FN_SIMPLE);
+    fixture_close(&f);
+}
+
 /* ---- a finely tessellated surface: every triangle of it is visible ---- */
 
 /* Ids of r carrying every bit of `reason`; whether each id carries some rule. */
@@ -479,6 +511,7 @@ int main(void)
     TV_TEST_RUN(test_box_seen_through_a_gap);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_culled_twin_of_a_wall);
+    TV_TEST_RUN(test_twinned_wall_diagonal);
     TV_TEST_RUN(test_explain_names_the_rules);
     TV_CHECK(rnd_validation_message_count(g_rnd) == 0);
     rnd_destroy(g_rnd);
