@@ -368,6 +368,19 @@ static void test_coincident_twins_across_near_plane(void)
     fixture_close(&f);
 }
 
+/* At Δ 10 cm from the origin: none of the n triangles from `first` on (all
+ * behind a wall) is in the PVS, and no false-negative pixel. Closes f. */
+static void check_hidden_behind_wall(fixture* f, uint32_t first, uint32_t n)
+{
+    pvs_result r;
+    pvs_viewcell vc;
+    compute_at_origin(f, 0.1f, &vc, &r);
+    printf("  quads behind the wall in the PVS: %u of %u\n", count_in_range(&r, first, n), n);
+    TV_CHECK(count_in_range(&r, first, n) == 0);
+    check_fn(f, &r, &vc, FN_SIMPLE);
+    fixture_close(f);
+}
+
 /* A single-sided wall exported as two coincident quads of opposite winding
  * (BSP levels), the culled twin rounded 0.01 mm nearer than the front, and
  * 24 open quads facing v* stacked 5-8 m behind the wall near its left edge,
@@ -388,13 +401,7 @@ static void test_culled_twin_of_a_wall(void)
         float d = 5.0f + 3.0f * (float)i / 23.0f; /* depth behind v0 */
         fx_quad_z(&f.scene, -0.46f * d, -0.2f, -0.44f * d, 0.2f, -d, m);
     }
-    pvs_result r;
-    pvs_viewcell vc;
-    compute_at_origin(&f, 0.1f, &vc, &r);
-    printf("  quads behind the wall in the PVS: %u of 48\n", count_in_range(&r, first, 48));
-    TV_CHECK(count_in_range(&r, first, 48) == 0);
-    check_fn(&f, &r, &vc, FN_SIMPLE);
-    fixture_close(&f);
+    check_hidden_behind_wall(&f, first, 48);
 }
 
 /* The same wall with its twin's corners exactly on its own (OpenArena's
@@ -420,13 +427,7 @@ static void test_twinned_wall_diagonal(void)
             fx_quad_z(&f.scene, x - h, y - h, x + h, y + h, -depths[i], m);
         }
     }
-    pvs_result r;
-    pvs_viewcell vc;
-    compute_at_origin(&f, 0.1f, &vc, &r);
-    printf("  quads behind the wall in the PVS: %u of 42\n", count_in_range(&r, first, 42));
-    TV_CHECK(count_in_range(&r, first, 42) == 0);
-    check_fn(&f, &r, &vc, FN_SIMPLE);
-    fixture_close(&f);
+    check_hidden_behind_wall(&f, first, 42);
 }
 
 /* ---- a finely tessellated surface: every triangle of it is visible ---- */
