@@ -228,7 +228,7 @@ static bool bench_method(bench_run* b, int scene, const tv_app_scene* s, int met
         int n = scene_cells(b, spec, s, b->deltas[d], &cells);
         ok = n > 0;
         for (int i = 0; ok && !b->cells_printed && i < n; i++) /* once per scene, to repeat with --pos */
-            fprintf(stderr, "bench %s: viewcell %d at %.2f,%.2f,%.2f looking %.2f,%.2f,%.2f\n", spec, i,
+            fprintf(stderr, "bench %s: viewcell %d at %.9g,%.9g,%.9g looking %.9g,%.9g,%.9g\n", spec, i,
                     cells[i].vc.v0[0], cells[i].vc.v0[1], cells[i].vc.v0[2], cells[i].vc.forward[0],
                     cells[i].vc.forward[1], cells[i].vc.forward[2]);
         b->cells_printed = b->cells_printed || ok;

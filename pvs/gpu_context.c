@@ -334,6 +334,9 @@ static bool occluder_adjacency(const scn_scene* scene, const uint32_t* remap, ui
     }
     if (ok) {
         scn_build_adjacency(compact, indices, n, remap);
+        size_t sheets = scn_pair_sheets(compact, indices, n, remap, scene->positions);
+        tv_log(TV_LOG_INFO, "pvs: %s: %zu edges of four triangles are two flat sheets (not silhouettes)", scene->name,
+               sheets);
         size_t joined = scn_join_tjunctions(compact, indices, n, scene->positions);
         tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges continue flat past a T-junction (not silhouettes)",
                scene->name, joined);

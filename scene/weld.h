@@ -51,6 +51,25 @@ size_t scn_weld_positions(uint32_t* remap, const float* positions, size_t vertex
 void scn_build_adjacency(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                          const uint32_t* remap);
 
+/* Map-compiled levels export some single-sided surfaces as two coincident
+ * faces of opposite winding, so a quad's diagonal is shared by four
+ * triangles and scn_build_adjacency writes SCN_EDGE_NONMANIFOLD there: a
+ * silhouette from everywhere, whose trim region erodes the surface along
+ * its diagonal (an OpenArena fog sheet spanning a whole level let everything
+ * above it into the PVS there). For each edge exactly four triangles share,
+ * two walking it each way, that pair into two same-facing pairs (unit
+ * normals within SCN_WELD_NORMAL_COS, so each pair lies in one plane, one
+ * triangle on each side of the edge), writes each triangle's partner into
+ * adjacency[]: each pair is a flat sheet that continues across the edge and
+ * faces one way from every point, so a ray crossing the plane near the edge
+ * meets a face of that sheet of the same facing on either side, and the
+ * edge is never a silhouette (scn_join_tjunctions' argument, per sheet).
+ * Any other non-manifold edge stays one. Run it on scn_build_adjacency's
+ * output with the same `indices` and `remap`. Returns the number of edges
+ * paired; 0 (nothing changed) if it cannot allocate. */
+size_t scn_pair_sheets(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count, const uint32_t* remap,
+                       const float* positions);
+
 /* Map-compiled levels (OpenArena) split faces at T-junctions: a long edge of
  * one triangle meets several shorter edges of its neighbours, so no edge is
  * shared and every one of them is a border, hence a silhouette and a trim

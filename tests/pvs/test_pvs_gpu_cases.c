@@ -368,6 +368,19 @@ static void test_coincident_twins_across_near_plane(void)
     fixture_close(&f);
 }
 
+/* At Δ 10 cm from the origin: none of the n triangles from `first` on (all
+ * behind a wall) is in the PVS, and no false-negative pixel. Closes f. */
+static void check_hidden_behind_wall(fixture* f, uint32_t first, uint32_t n)
+{
+    pvs_result r;
+    pvs_viewcell vc;
+    compute_at_origin(f, 0.1f, &vc, &r);
+    printf("  quads behind the wall in the PVS: %u of %u\n", count_in_range(&r, first, n), n);
+    TV_CHECK(count_in_range(&r, first, n) == 0);
+    check_fn(f, &r, &vc, FN_SIMPLE);
+    fixture_close(f);
+}
+
 /* A single-sided wall exported as two coincident quads of opposite winding
  * (BSP levels), the culled twin rounded 0.01 mm nearer than the front, and
  * 24 open quads facing v* stacked 5-8 m behind the wall near its left edge,
@@ -388,13 +401,33 @@ static void test_culled_twin_of_a_wall(void)
         float d = 5.0f + 3.0f * (float)i / 23.0f; /* depth behind v0 */
         fx_quad_z(&f.scene, -0.46f * d, -0.2f, -0.44f * d, 0.2f, -d, m);
     }
-    pvs_result r;
-    pvs_viewcell vc;
-    compute_at_origin(&f, 0.1f, &vc, &r);
-    printf("  quads behind the wall in the PVS: %u of 48\n", count_in_range(&r, first, 48));
-    TV_CHECK(count_in_range(&r, first, 48) == 0);
-    check_fn(&f, &r, &vc, FN_SIMPLE);
-    fixture_close(&f);
+    check_hidden_behind_wall(&f, first, 48);
+}
+
+/* The same wall with its twin's corners exactly on its own (OpenArena's
+ * fog sheet, docs/journal/2026-12-03-czfp.md), so the four triangles share
+ * the quad's diagonal, and small open quads far behind it along the
+ * diagonal's shadow. As a non-manifold edge the diagonal was a silhouette,
+ * its trim region eroded the wall along it, and the quads behind that
+ * region's umbra were output; paired into two flat sheets
+ * (scn_pair_sheets) it is none, and the wall hides them all. */
+static void test_twinned_wall_diagonal(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    const float wall[4][3] = {{-2.0f, -1.5f, -4.0f}, {2.0f, -1.5f, -4.0f}, {2.0f, 1.5f, -4.0f}, {-2.0f, 1.5f, -4.0f}};
+    const float twin[4][3] = {{-2.0f, -1.5f, -4.0f}, {-2.0f, 1.5f, -4.0f}, {2.0f, 1.5f, -4.0f}, {2.0f, -1.5f, -4.0f}};
+    fx_quad(&f.scene, wall, m); /* faces v* */
+    fx_quad(&f.scene, twin, m);
+    uint32_t first = f.scene.triangle_count;
+    const float depths[7] = {6.0f, 10.0f, 15.0f, 20.0f, 30.0f, 45.0f, 60.0f};
+    for (int i = 0; i < 7; i++) {
+        for (int j = -1; j <= 1; j++) {
+            float s = depths[i] / 4.0f, x = 1.2f * (float)j * s, y = 0.9f * (float)j * s, h = 0.1f * s;
+            fx_quad_z(&f.scene, x - h, y - h, x + h, y + h, -depths[i], m);
+        }
+    }
+    check_hidden_behind_wall(&f, first, 42);
 }
 
 /* ---- a finely tessellated surface: every triangle of it is visible ---- */
@@ -479,6 +512,7 @@ int main(void)
     TV_TEST_RUN(test_box_seen_through_a_gap);
     TV_TEST_RUN(test_coincident_twins_across_near_plane);
     TV_TEST_RUN(test_culled_twin_of_a_wall);
+    TV_TEST_RUN(test_twinned_wall_diagonal);
     TV_TEST_RUN(test_explain_names_the_rules);
     TV_CHECK(rnd_validation_message_count(g_rnd) == 0);
     rnd_destroy(g_rnd);

@@ -170,6 +170,33 @@ static void test_adjacency_fin(void)
         TV_CHECK(adj[3 * t + 1] == SCN_EDGE_BORDER && adj[3 * t + 2] == SCN_EDGE_BORDER);
 }
 
+/* A quad and its coincident twin of opposite winding (a soup): the four
+ * triangles share the diagonal (0,0,0)-(1,1,0), which scn_pair_sheets pairs
+ * front with front and twin with twin; with the last twin tilted out of the
+ * plane no same-facing pairing exists and the edge stays non-manifold. */
+static void test_pair_sheets(void)
+{
+    for (int tilt = 0; tilt < 2; tilt++) {
+        float pos[] = { 0, 0, 0, 1, 0, 0, 1, 1, 0,  0, 0, 0, 1, 1, 0, 0, 1, 0,  /* faces +z */
+                        0, 0, 0, 0, 1, 0, 1, 1, 0,  0, 0, 0, 1, 1, 0, 1, 0, 0 }; /* faces -z */
+        pos[35] = tilt ? 0.5f : 0.0f;
+        uint32_t idx[12], remap[12], adj[12];
+        for (uint32_t i = 0; i < 12; i++)
+            idx[i] = i;
+        scn_weld_positions(remap, pos, 12);
+        scn_build_adjacency(adj, idx, 4, remap);
+        TV_CHECK(adj[2] == SCN_EDGE_NONMANIFOLD && adj[3] == SCN_EDGE_NONMANIFOLD);
+        TV_CHECK(scn_pair_sheets(adj, idx, 4, remap, pos) == (size_t)!tilt);
+        if (tilt) {
+            TV_CHECK(adj[2] == SCN_EDGE_NONMANIFOLD && adj[3] == SCN_EDGE_NONMANIFOLD);
+            TV_CHECK(adj[8] == SCN_EDGE_NONMANIFOLD && adj[9] == SCN_EDGE_NONMANIFOLD);
+        } else {
+            TV_CHECK(adj[2] == 1 && adj[3] == 0 && adj[8] == 3 && adj[9] == 2);
+        }
+        TV_CHECK(adj[0] == (tilt ? SCN_EDGE_BORDER : 3)); /* the edge (0,0,0)-(1,0,0): a quad and its twin */
+    }
+}
+
 static void test_adjacency_mixed_winding_and_degenerate(void)
 {
     /* triangle 1 walks the shared edge in the same direction as triangle 0
@@ -255,6 +282,7 @@ int main(void)
     TV_TEST_RUN(test_adjacency_cube);
     TV_TEST_RUN(test_adjacency_open_quad);
     TV_TEST_RUN(test_adjacency_fin);
+    TV_TEST_RUN(test_pair_sheets);
     TV_TEST_RUN(test_adjacency_mixed_winding_and_degenerate);
     TV_TEST_RUN(test_adjacency_grid_scale);
     TV_TEST_RUN(test_join_tjunctions);
