@@ -5,22 +5,6 @@
 #ifndef TRIMVR_PVS_RESOLVE_REGIONS_H
 #define TRIMVR_PVS_RESOLVE_REGIONS_H
 
-/* The nearest and farthest fragment of trim seq[i]'s region in front of trims_lost; returns their count. */
-static uint32_t region_span(const seq_entry* seq, uint32_t n, uint32_t i, float trims_lost, float* mn, float* mx)
-{
-    uint32_t count = 0;
-    *mn = INFINITY;
-    *mx = -INFINITY;
-    for (uint32_t j = 0; j < n; j++) {
-        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == seq[i].id && seq[j].depth < trims_lost) {
-            *mn = fminf(*mn, seq[j].depth);
-            *mx = fmaxf(*mx, seq[j].depth);
-            count++;
-        }
-    }
-    return count;
-}
-
 /* Whether trim seq[i]'s region meets the depth range [lo, hi] at this pixel. P2 puts a trim quad's fragments at up
  * to three depths: the midpoint of its solid's two planes, at the nearer and (grazing fronts only) at the farther
  * one, those two moved TV_PVS_TRIM_NUDGE towards the other. The solid lies between the planes, so the region meets
@@ -31,8 +15,15 @@ static uint32_t region_span(const seq_entry* seq, uint32_t n, uint32_t i, float 
  * depends on arrival order, and the PVS must not. */
 static bool region_meets(const seq_entry* seq, uint32_t n, uint32_t i, float lo, float hi, float trims_lost)
 {
-    float mn, mx;
-    uint32_t count = region_span(seq, n, i, trims_lost, &mn, &mx);
+    float mn = INFINITY, mx = -INFINITY;
+    uint32_t count = 0;
+    for (uint32_t j = 0; j < n; j++) {
+        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == seq[i].id && seq[j].depth < trims_lost) {
+            mn = fminf(mn, seq[j].depth);
+            mx = fmaxf(mx, seq[j].depth);
+            count++;
+        }
+    }
     if (count == 0)
         return false;
     if (mn <= hi && mx >= lo * (float)TV_PVS_TIE_LO)
