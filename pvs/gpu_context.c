@@ -5,7 +5,6 @@
 #include "gpu_internal.h"
 
 #include "clock.h"
-#include "convex.h"
 #include "log.h"
 #include "weld.h"
 
@@ -244,7 +243,6 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_COOP_LIST, pixels * 4},
         {TV_PVS_BIND_PROXIES, (VkDeviceSize)ctx->max_proxies * PVS_PROXY_FLOATS * 4},
         {TV_PVS_BIND_SPILL, (1 + 2 * drawn) * 4},
-        {TV_PVS_BIND_CONVEX, (drawn + 31) / 32 * 4},
     };
     for (size_t i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
         if (!create_buffer(ctx, fixed[i].binding, fixed[i].size, err, err_size))
@@ -361,21 +359,6 @@ static bool occluder_adjacency(const scn_scene* scene, const uint32_t* remap, ui
     return ok;
 }
 
-/* pvs_convex_patches over the occluders' adjacency (masked materials open their patch): the guard of P3's rule
- * for regions behind a prior front, uploaded with it. */
-static uint32_t* convex_bits(const pvs_context* ctx, const scn_scene* scene, const uint32_t* adjacency)
-{
-    uint32_t* bits = calloc(ctx->buffers[TV_PVS_BIND_CONVEX].size / 4, sizeof(uint32_t));
-    bool* masked = malloc(scene->triangle_count);
-    for (uint32_t t = 0; bits && masked && t < scene->triangle_count; t++)
-        masked[t] = scene->materials[scene->tri_material[t]].alpha_mode == SCN_ALPHA_MASK;
-    size_t n = bits && masked ? pvs_convex_patches(bits, adjacency, scene->indices, scene->triangle_count,
-                                                   scene->positions, masked) : (size_t)-1;
-    tv_log(TV_LOG_INFO, "pvs: %s: %zu triangles on closed convex patches", scene->name, n == (size_t)-1 ? 0 : n);
-    free(masked);
-    return bits;
-}
-
 /* Welded adjacency, uploaded once: P1 finds silhouettes with it. */
 static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err, size_t err_size)
 {
@@ -389,20 +372,13 @@ static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err
     if (ok) {
         scn_weld_positions(remap, scene->positions, scene->vertex_count);
         ok = occluder_adjacency(scene, remap, adjacency, err, err_size);
-        uint32_t* bits = ok ? convex_bits(ctx, scene, adjacency) : NULL;
-        rnd_staging staging = {0}, staging2 = {0};
-        if (ok && !bits)
-            ok = (snprintf(err, err_size, "pvs: out of memory for the convex patches of %s", scene->name), false);
+        rnd_staging staging = {0};
         ok = ok && rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size) &&
              rnd_upload_buffer(ctx->rnd, ctx->stream.cmd, &staging, adjacency,
                                sizeof(uint32_t) * 3 * (VkDeviceSize)scene->triangle_count,
                                ctx->buffers[TV_PVS_BIND_ADJ].buffer, err, err_size) &&
-             rnd_upload_buffer(ctx->rnd, ctx->stream.cmd, &staging2, bits, ctx->buffers[TV_PVS_BIND_CONVEX].size,
-                               ctx->buffers[TV_PVS_BIND_CONVEX].buffer, err, err_size) &&
              rnd_stream_submit_wait(ctx->rnd, &ctx->stream, err, err_size);
         rnd_staging_release(ctx->rnd, &staging);
-        rnd_staging_release(ctx->rnd, &staging2);
-        free(bits);
     }
     free(remap);
     free(adjacency);

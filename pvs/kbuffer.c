@@ -135,10 +135,8 @@ static bool push_joined(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float 
     return kbuf->trim_count < TV_K_TRIM && push_entry(kbuf, pages, u); /* a full list drops it uncounted */
 }
 
-void pvs_centre_store(float centre[TV_PVS_CENTRE_STRIDE], uint32_t kind, float depth, uint32_t id, bool convex)
+void pvs_centre_store(float centre[TV_PVS_CENTRE_STRIDE], uint32_t kind, float depth, uint32_t id)
 {
-    if (kind == TV_ENTRY_FRONT && !convex)
-        centre[TV_PVS_CENTRE_NONCONVEX] = fminf(centre[TV_PVS_CENTRE_NONCONVEX], depth);
     assert(kind == TV_ENTRY_FRONT || kind == TV_ENTRY_BACK);
     bool culled = kind == TV_ENTRY_BACK && (id & TV_ID_CULLED) != 0;
     uint32_t slot = kind == TV_ENTRY_FRONT ? TV_PVS_CENTRE_FRONT : culled ? TV_PVS_CENTRE_CULLED : TV_PVS_CENTRE_BACK;

@@ -216,7 +216,7 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
         float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
         bool lost = hi >= iv->trims_lost;
         iv->valid[v] = lost;
-        bool cracked = false, closed = prior_closed(k, &seq[iv->first[v]]), met = false;
+        bool cracked = false;
         iv->end[v] = iv->end_fp[v] = hi;
         for (uint32_t i = 0; i < n; i++) {
             if (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth >= iv->trims_lost)
@@ -232,10 +232,9 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
             if (!pvs_umbra_depth(s, k, seq[i].id, &u, &f) || u < hi)
                 u = hi;
             f = f < hi ? hi : f;
-            iv->end[v] = met && iv->end[v] < u ? iv->end[v] : u; /* a skipped region's umbra still bounds it */
-            iv->end_fp[v] = met && iv->end_fp[v] < f ? iv->end_fp[v] : f;
-            met = true;
-            iv->valid[v] = iv->valid[v] || !(closed && region_behind(seq, n, i, lo, iv->trims_lost));
+            iv->end[v] = iv->valid[v] && iv->end[v] < u ? iv->end[v] : u;
+            iv->end_fp[v] = iv->valid[v] && iv->end_fp[v] < f ? iv->end_fp[v] : f;
+            iv->valid[v] = true;
         }
         /* Through a crack the eyes see the inside, and with the back culled
          * whatever lies behind it: the interval hides its inside only. */

@@ -32,30 +32,6 @@ static bool region_meets(const seq_entry* seq, uint32_t n, uint32_t i, float lo,
     return count > 1 && fabsf(lo - far) <= 4.0f * TV_PVS_TRIM_NUDGE * far;
 }
 
-/* Whether an interval starting at `first` starts at a closed prior front: the prior front, with no open front
- * (TV_PVS_CENTRE_NONCONVEX, pvs/convex.h) as near at the centre. The eyes see past it only across silhouettes of
- * its convex patch, whose draws lie at or in front of its plane (docs/pvs-edge-cases.md, "Regions behind a prior
- * front"). */
-static bool prior_closed(const pvs_kbuf* k, const seq_entry* first)
-{
-    return first->id == TV_ID_PRIOR && first->depth < k->nonconvex_front;
-}
-
-/* Whether trim seq[i]'s region has a nearer-plane draw (two or three draws) and all its fragments lie behind
- * TV_PVS_PRIOR_MARGIN times `lo`: no silhouette of a closed prior front at lo. */
-static bool region_behind(const seq_entry* seq, uint32_t n, uint32_t i, float lo, float trims_lost)
-{
-    float mn = INFINITY;
-    uint32_t count = 0;
-    for (uint32_t j = 0; j < n; j++) {
-        if (seq[j].kind == TV_ENTRY_TRIM && seq[j].id == seq[i].id && seq[j].depth < trims_lost) {
-            mn = fminf(mn, seq[j].depth);
-            count++;
-        }
-    }
-    return count > 1 && mn > (float)TV_PVS_PRIOR_MARGIN * lo;
-}
-
 /* Whether trim region `id` has a fragment among seq[0, n). */
 static bool region_in(const seq_entry* seq, uint32_t n, uint32_t id)
 {

@@ -72,7 +72,6 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LOST) PVS_RW coherent buf
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_COOP_LIST) PVS_RW buffer pvs_coop_list_buf { uint coop_list[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_SPILL) PVS_RW coherent buffer pvs_spill_buf { uint spill_list[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ORDER) PVS_RW coherent buffer pvs_order_buf { uint p1_order[]; };
-layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CONVEX) readonly buffer pvs_convex_buf { uint convex_bits[]; };
 
 layout(push_constant) uniform pvs_push_block {
     uint layer_offset;

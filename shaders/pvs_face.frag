@@ -209,9 +209,6 @@ void main()
     if (kind == pc.kind) {
         atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + (kind == TV_PVS_KIND_BACK ? TV_PVS_CENTRE_BACK : TV_PVS_CENTRE_FRONT)],
                   floatBitsToUint(w));
-        // a front whose surface may continue concavely (pvs/convex.h): its interval keeps every region
-        if (kind == TV_PVS_KIND_FRONT && (convex_bits[v_triangle / 32u] & (1u << (v_triangle % 32u))) == 0u)
-            atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_NONCONVEX], floatBitsToUint(w));
     } else { // the dilated pass, after the exact one
         uint c = TV_PVS_CENTRE_STRIDE * p;
         float nearest = uintBitsToFloat(min(centre_depth[c + TV_PVS_CENTRE_FRONT], centre_depth[c + TV_PVS_CENTRE_BACK]));

@@ -237,11 +237,6 @@ void form_intervals(uint n)
     }
 }
 
-bool prior_closed(uint first) // resolve.c
-{
-    return ent[first].id == TV_ID_PRIOR && ent[first].depth < kdepth(centre_depth[TV_PVS_CENTRE_STRIDE * P + TV_PVS_CENTRE_NONCONVEX]);
-}
-
 void validate(uint n)
 {
     for (uint v = 0u; v < iv_count; v++) {
@@ -256,16 +251,14 @@ void validate(uint n)
             if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
                 cracked = true;
         }
-        bool closed = prior_closed(iv_first[v]), met = false; // resolve.c
         for (uint r = 0u; !lost_here && r < rg_n; r++) { // resolve.c's fragments, a region at a time
             if (!region_meets(r, lo, hi))
                 continue;
             float u = rg_umbra[r] < hi || isinf(rg_umbra[r]) ? hi : rg_umbra[r];
             float f = isinf(rg_umbra[r]) ? hi : max(rg_umbra_fp[r], hi);
-            iv_end[v] = met && iv_end[v] < u ? iv_end[v] : u;
-            iv_end_fp[v] = met && iv_end_fp[v] < f ? iv_end_fp[v] : f;
-            met = true;
-            iv_valid[v] = iv_valid[v] || !(closed && rg_count[r] > 1u && rg_mn[r] > TV_PVS_PRIOR_MARGIN * lo);
+            iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
+            iv_end_fp[v] = iv_valid[v] && iv_end_fp[v] < f ? iv_end_fp[v] : f;
+            iv_valid[v] = true;
         }
         if (cracked && is_culled(ent[iv_back[v]])) { // resolve.c: seen through
             iv_valid[v] = true;

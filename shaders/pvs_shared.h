@@ -79,11 +79,6 @@
  * front of the front, so the trim neither met the interval nor was carried with its run). A fragment this close in
  * front of an interval's front counts as inside (region_meets, carry_run). */
 #define TV_PVS_TIE_LO (1.0 - TV_PVS_TRIM_NUDGE)
-/* A region with a nearer-plane draw (two or three draws) whose fragments all lie behind this many times the depth of
- * a closed prior front (TV_PVS_CENTRE_NONCONVEX) does not validate its interval: its edge is no silhouette of that
- * front's convex patch, whose draws lie at or in front of the front's plane (docs/pvs-edge-cases.md, "Regions behind
- * a prior front"); the 10 % covers a pixel's width of a receding plane and rounding. */
-#define TV_PVS_PRIOR_MARGIN 1.1
 /* Raster far plane relative to the PVS far plane (pvs/gpu_compute.c), 1 %
  * further: it kept the umbra quads' far corners, which lie on the latter,
  * when the umbrae had a draw of their own; pvs_quad.frag drops the trim
@@ -263,10 +258,7 @@
 // "Prior faces"). Depths as floats, in C and GLSL.
 #define TV_PVS_CENTRE_CULLED_BEHIND 3u
 #define TV_PVS_PRIOR_CULLED_BEHIND(front, culled) ((culled) > (front))
-// The nearest front whose convex patch is open (not TV_PVS_BIND_CONVEX): a prior front nearer than it is closed, and
-// P3 lets no region wholly behind it validate its interval (TV_PVS_PRIOR_MARGIN; docs/pvs-edge-cases.md).
-#define TV_PVS_CENTRE_NONCONVEX 4u
-#define TV_PVS_CENTRE_STRIDE  5u
+#define TV_PVS_CENTRE_STRIDE  4u
 #define TV_PVS_BIND_LOST       21 // TV_PVS_LOST_STRIDE uints per pixel, depth bits: the nearest lost front, lost candidate (P3 replaces it by the candidate spill bound), lost trim
 #define TV_PVS_LOST_FRONT     0u // slots of a pixel's TV_PVS_BIND_LOST entry: what the layer's k-buffer had no room for (P2, atomicMin)
 #define TV_PVS_LOST_CANDIDATE 1u
@@ -284,8 +276,7 @@
 #define TV_PVS_ORDER_CLASS(cap, i) (3u * (cap) + (i))       // layer triangle i's TV_PVS_CLASS_* bits
 #define TV_PVS_ORDER_GROUP(cap, g) (4u * (cap) + 4u * (g))  // P1 workgroup g: FF, BF, record counts (cleared per layer), then offsets and first region id
 #define TV_PVS_BIND_KREGIONS   26 // FLAT: the region list's pages (trim and umbra lists); KPOOL holds the fronts' and backs'
-#define TV_PVS_BIND_CONVEX     27 // bit t of uint t / 32: triangle t's convex patch is closed (pvs/convex.h), set once per scene
-#define TV_PVS_BINDINGS        28
+#define TV_PVS_BINDINGS        27
 
 // Class word of a layer triangle (TV_PVS_ORDER_CLASS): which of P1's lists
 // it enters, a back's flags, and which of its edges emitted a silhouette

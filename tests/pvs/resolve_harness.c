@@ -4,7 +4,7 @@
 #include <string.h>
 
 uint32_t harness_pages = HARNESS_MAX_PAGES;
-uint32_t harness_k_exact, harness_k_lists, harness_convex_front;
+uint32_t harness_k_exact, harness_k_lists;
 
 /* centre: P2's prior faces at the pixel centre over this and the earlier layers (TV_PVS_CENTRE_*; 0: none). */
 static layer_result run_layer_centre(pvs_pixel_state* s, const float centre[TV_PVS_CENTRE_STRIDE], const item* items,
@@ -21,7 +21,6 @@ static layer_result run_layer_centre(pvs_pixel_state* s, const float centre[TV_P
     k.nearest_back = centre[TV_PVS_CENTRE_BACK];
     k.nearest_culled_back = centre[TV_PVS_CENTRE_CULLED];
     k.culled_behind = centre[TV_PVS_CENTRE_CULLED_BEHIND];
-    k.nonconvex_front = centre[TV_PVS_CENTRE_NONCONVEX];
     layer_result r = {0};
     for (uint32_t i = 0; i < n; i++) {
         if (!pvs_kbuf_push(&k, &pages, items[i].kind, items[i].depth, items[i].id) && items[i].kind == TV_ENTRY_FRONT)
@@ -51,8 +50,7 @@ layer_result run_layer_kept(pvs_pixel_state* s, float centre[TV_PVS_CENTRE_STRID
     for (uint32_t pass = 0; pass < 2; pass++) {
         for (uint32_t i = 0; i < n; i++) {
             if (items[i].kind == (pass ? TV_ENTRY_BACK : TV_ENTRY_FRONT) && !(items[i].id & TV_ID_CANDIDATE))
-                pvs_centre_store(centre, items[i].kind, items[i].depth, items[i].id,
-                                 harness_convex_front != 0 && items[i].id == harness_convex_front);
+                pvs_centre_store(centre, items[i].kind, items[i].depth, items[i].id);
         }
     }
     return run_layer_centre(s, centre, items, n);

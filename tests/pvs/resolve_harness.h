@@ -43,8 +43,6 @@ extern uint32_t harness_pages;
 extern uint32_t harness_k_exact;
 /* pvs_kbuf.k_lists of each run_layer* (0: TV_K_FRONT, TV_K_BACK). */
 extern uint32_t harness_k_lists;
-/* The front whose convex patch run_layer_kept's P2 finds closed (pvs/convex.h; 0: none, every front is open). */
-extern uint32_t harness_convex_front;
 
 
 /* One layer: pushes `items` into a k-buffer as P2 would (prior_front /

@@ -87,7 +87,7 @@ static void store_pixel(const pvs_kbuf* raw, uint32_t umbrae, pvs_kpages* pages,
 {
     *kb = (pvs_kbuf){.k_exact = K_EXACT, .k_lists = K_LISTS, .nearest_front = raw->nearest_front,
                      .nearest_back = raw->nearest_back, .nearest_culled_back = raw->nearest_culled_back,
-                     .culled_behind = raw->culled_behind, .nonconvex_front = raw->nonconvex_front,
+                     .culled_behind = raw->culled_behind,
                      .front_lost = raw->front_lost, .candidate_lost = raw->candidate_lost, .trim_lost = raw->trim_lost};
     if (heads)
         memcpy(kb->head, heads, sizeof kb->head);
@@ -150,7 +150,6 @@ static uint32_t make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     kb->nearest_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->nearest_culled_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->culled_behind = rnd_u(2) ? rnd_depth() : INFINITY;
-    kb->nonconvex_front = rnd_u(2) ? INFINITY : rnd_u(2) ? kb->nearest_front : rnd_depth(); /* closed prior fronts */
     kb->front_lost = rnd_u(8) == 0 ? rnd_depth() : 0.0f;
     kb->candidate_lost = rnd_u(3) == 0 ? rnd_depth() : 0.0f; /* P3 then outputs stored candidates */
     kb->trim_lost = rnd_u(2) ? rnd_depth() : 0.0f; /* read when the trim list overflowed */
@@ -253,7 +252,6 @@ static void upload(pvs_context* ctx, const case_data* c)
         centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_BACK] = fbits(kb->nearest_back);
         centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED] = fbits(kb->nearest_culled_back);
         centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED_BEHIND] = fbits(kb->culled_behind);
-        centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_NONCONVEX] = fbits(kb->nonconvex_front);
         uint32_t* l = lost + TV_PVS_LOST_STRIDE * p;
         l[TV_PVS_LOST_FRONT] = kb->front_lost > 0.0f ? fbits(kb->front_lost) : fbits(INFINITY);
         l[TV_PVS_LOST_CANDIDATE] = kb->candidate_lost > 0.0f ? fbits(kb->candidate_lost) : fbits(INFINITY);
