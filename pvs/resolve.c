@@ -499,10 +499,14 @@ static uint32_t resolve_layer(pvs_pixel_state* state, const pvs_kbuf* kbuf, uint
     bool first = state->stencil == TV_STENCIL_UNTRIMMED;
     assert(!first || state->carry_count == 0); /* room for the prior faces */
     state->stencil = TV_STENCIL_TRIMMED;
-    /* Where k_deep off would take the overflow policy (a front list longer than k), the carried hidden range
-     * counts for nothing, as the umbrae that ended it in earlier layers (pvs_umbra_depth; journal/2026-12-03-deepfix) */
-    if (pvs_kbuf_deep(kbuf) && kbuf->front_count > kbuf->k_exact)
-        state->hide_begin = state->hide_end = 0.0f;
+    /* Where k_deep off would take the overflow policy (a front list longer than k), the carried hidden range ends
+     * at its footprints, as the umbrae that ended it (pvs_umbra_depth; journal/2026-12-03-deepfix; dropping it
+     * grew the PVS, -ovf2) */
+    if (pvs_kbuf_deep(kbuf) && kbuf->front_count > kbuf->k_exact) {
+        state->hide_end = state->hide_end_fp;
+        if (!(state->hide_begin < state->hide_end))
+            state->hide_begin = state->hide_end = 0.0f;
+    }
     seq_entry seq[SEQ_MAX], seq2[SEQ2_MAX];
     intervals iv;
     uint32_t n = gather(state, kbuf, first, seq);

@@ -471,8 +471,10 @@ uint resolve_begin(out bool first)
     if (overflow_due)
         return RESOLVE_OVERFLOW;
     stencil = TV_STENCIL_TRIMMED;
-    if (deep_pixel() && cnt.x > view.k_exact) // resolve.c: the carried range, which umbrae ended
-        hide_begin = hide_end = 0.0;
+    if (deep_pixel() && cnt.x > view.k_exact) { // resolve.c: the carried range ends at its footprints
+        hide_end = hide_begin < hide_end_fp ? hide_end_fp : 0.0;
+        hide_begin = hide_end > 0.0 ? hide_begin : 0.0;
+    }
     return RESOLVE_SEQUENCE;
 }
 

@@ -2,7 +2,7 @@
  * kept, fronts behind the terminator, full umbra, trim and back lists, prior
  * faces, a carry that does not fit, and a k-buffer page pool that runs
  * out, and a deep pixel (more entries than k, fewer than the lists hold),
- * which ignores umbrae and the hidden range they carried. */
+ * which ends umbrae and the hidden range they carried at their footprints. */
 #include "resolve_harness.h"
 #include "test.h"
 
@@ -235,26 +235,28 @@ static void test_deep_by_regions_keeps_umbrae(void)
 }
 
 /* Sponza's deep pixel (382, 256) (docs/journal/2026-12-03-deepfix.md): a
- * shallow layer validates [1, 1.5] with region 1's umbra at 10 and carries
- * the hidden range [1, 10]; a later layer's faces at 4-5 lie in it. At a
- * shallow pixel they stay hidden (F 20 seals unseen). Where the front list
- * is longer than k (k_deep off would output every front) that range, which
- * an umbra ended, counts for nothing as umbrae do: the candidates and the
- * terminator F 20 are output. A pixel deep by its trims alone keeps it. */
-static void test_deep_pixel_drops_carried_range(void)
+ * shallow layer validates [1, 1.5] with region 1's umbra at 10 (its footprint
+ * 4.14) and carries the hidden range [1, 10]; a later layer's faces at 4-5
+ * lie in it. At a shallow pixel they stay hidden (F 20 seals unseen). Where
+ * the front list is longer than k (k_deep off would output every front) that
+ * range ends at its footprint, as umbrae do: C 4.2 and the terminator F 20
+ * are output, C 4.0 and 4.1 stay hidden (dropping the range, as before
+ * 2026-12-03-ovf2, output them too). A pixel deep by its trims alone keeps it. */
+static void test_deep_pixel_carried_range_at_footprint(void)
 {
     harness_k_exact = 3;
     for (uint32_t c = 0; c < 3; c++) { /* shallow, 4 fronts, 4 trims */
         pvs_pixel_state s = {0};
-        layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(10.0f, 1));
+        layer_result r = RUN(s, F(1.0f, 1), T(1.2f, 1), B(1.5f), U(pvs_umbra_pack(10.0f, 4.15f), 1));
         CHECK_OUT(r, 1);
         TV_CHECK(s.stencil == TV_STENCIL_TRIMMED && s.hide_begin == 1.0f && s.hide_end == 10.0f);
+        TV_CHECK(s.hide_end_fp > 4.1f && s.hide_end_fp < 4.15f);
         item later[] = {C(4.0f, 10), C(4.1f, 11), C(4.2f, 12), F(5.0f, 20), B(5.5f),
                         T(6.0f, 7),  T(6.1f, 8),  T(6.2f, 9),  T(6.3f, 10)};
         r = c == 1 ? run_layer(&s, later, 5) : run_layer(&s, later + 1, c == 0 ? 4 : 8);
         TV_CHECK(!r.overflowed && s.stencil == TV_STENCIL_SEALED && s.term_depth == 5.0f);
         if (c == 1)
-            CHECK_OUT(r, 10, 11, 12, 20);
+            CHECK_OUT(r, 12, 20);
         else
             CHECK_NONE(r);
     }
@@ -576,7 +578,7 @@ int main(void)
     TV_TEST_RUN(test_spill_span_ends_at_footprint);
     TV_TEST_RUN(test_overflow_umbra_list);
     TV_TEST_RUN(test_deep_pixel_umbrae_at_footprints);
-    TV_TEST_RUN(test_deep_pixel_drops_carried_range);
+    TV_TEST_RUN(test_deep_pixel_carried_range_at_footprint);
     TV_TEST_RUN(test_deep_by_regions_keeps_umbrae);
     TV_TEST_RUN(test_overflow_trim_list);
     TV_TEST_RUN(test_regions_in_one_entry);
