@@ -284,7 +284,7 @@ _Static_assert(PVS_K_MAX <= TV_K_FRONT && PVS_K_MAX <= TV_K_BACK && PVS_K_MAX <=
 _Static_assert(TV_ADJ_REST == SCN_EDGE_REST, "the shaders read scn_join_rest_edges' flag");
 
 /* Border edges resting on an opaque face become TV_ADJ_REST | face, after
- * the cracks (which stay always-silhouettes). */
+ * the cracks (which stay always-silhouettes); then glued edges, never silhouettes. */
 static bool join_rest_edges(const scn_scene* scene, const uint32_t* ids, const uint32_t* indices, uint32_t count,
                             uint32_t* adjacency, char* err, size_t err_size)
 {
@@ -297,8 +297,9 @@ static bool join_rest_edges(const scn_scene* scene, const uint32_t* ids, const u
         solid[c] = scene->materials[scene->tri_material[ids[c]]].alpha_mode == SCN_ALPHA_OPAQUE;
     double t0 = tv_now_ms();
     size_t n = scn_join_rest_edges(adjacency, indices, count, scene->positions, solid);
-    tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges rest on an opaque face (%.0f ms)", scene->name, n,
-           tv_now_ms() - t0);
+    size_t g = scn_join_glued_edges(adjacency, indices, count, scene->positions, solid);
+    tv_log(TV_LOG_INFO, "pvs: %s: %zu border edges rest on an opaque face, %zu edges glued (%.0f ms)", scene->name, n,
+           g, tv_now_ms() - t0);
     free(solid);
     return true;
 }

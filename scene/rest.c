@@ -1,5 +1,7 @@
 /* rest.c - border edges that rest on another face (see scn_join_rest_edges
- * in weld.h; the argument is in docs/trim-regions.md, "Silhouettes"). */
+ * in weld.h; the argument is in docs/trim-regions.md, "Silhouettes"), and
+ * manifold edges of parts glued on a closed solid (scn_join_glued_edges;
+ * docs/pvs-edge-cases.md, "Parts glued on a closed solid"). */
 #include "weld.h"
 
 #include "cell_hash.h"
@@ -309,4 +311,191 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
     free(w.normals);
     free(w.spans);
     return joined; /* those joined before a failed allocation are sound */
+}
+
+/* Per triangle, whether its connected component (triangles joined by
+ * adjacency entries that name a triangle) has no other edge: a closed
+ * surface. Union-find with path halving. NULL when out of memory. */
+static uint8_t* closed_components(const uint32_t* adjacency, size_t triangle_count)
+{
+    uint32_t* root = malloc(sizeof(uint32_t) * (triangle_count ? triangle_count : 1));
+    uint8_t* closed = malloc(triangle_count ? triangle_count : 1);
+    if (!root || !closed) {
+        free(root);
+        free(closed);
+        return NULL;
+    }
+    for (uint32_t t = 0; t < triangle_count; t++)
+        root[t] = t, closed[t] = 1;
+    for (size_t i = 0; i < 3 * triangle_count; i++) {
+        uint32_t a = (uint32_t)(i / 3), b = adjacency[i];
+        if (b >= SCN_EDGE_REST)
+            continue;
+        while (root[a] != a)
+            a = root[a] = root[root[a]];
+        while (root[b] != b)
+            b = root[b] = root[root[b]];
+        if (a != b)
+            root[a < b ? b : a] = a < b ? a : b;
+    }
+    for (size_t i = 0; i < 3 * triangle_count; i++) {
+        uint32_t a = (uint32_t)(i / 3);
+        while (root[a] != a)
+            a = root[a];
+        if (adjacency[i] >= SCN_EDGE_REST && adjacency[i] != SCN_EDGE_NONMANIFOLD)
+            closed[a] = 0; /* a border: an opening (an edge three or more faces share has no side open) */
+    }
+    for (uint32_t t = 0; t < triangle_count; t++) {
+        uint32_t a = t;
+        while (root[a] != a)
+            a = root[a];
+        closed[t] = closed[a];
+    }
+    free(root);
+    return closed;
+}
+
+/* A key of the plane (n, d = n . p) quantised to 1e-3, the normal and the
+ * distance shifted by `dd` steps: a plane near another may round to a
+ * neighbouring key, which only skips an edge (it stays a silhouette). */
+static uint64_t plane_key(const float* n, float d, int dd)
+{
+    uint64_t h = 1469598103934665603ull;
+    int32_t q[4] = {(int32_t)lrintf(n[0] * 1000.0f), (int32_t)lrintf(n[1] * 1000.0f), (int32_t)lrintf(n[2] * 1000.0f),
+                    (int32_t)lrintf(d * 1000.0f) + dd};
+    for (int i = 0; i < 4; i++)
+        h = (h ^ (uint32_t)q[i]) * 1099511628211ull;
+    return h;
+}
+
+static int compare_u64(const void* a, const void* b)
+{
+    uint64_t x = *(const uint64_t*)a, y = *(const uint64_t*)b;
+    return (x > y) - (x < y);
+}
+
+/* Corner of tri k whose position is bitwise p's, or 3. */
+static uint32_t corner_at(const float* positions, const uint32_t* indices, uint32_t tri, const float* p)
+{
+    for (uint32_t c = 0; c < 3; c++)
+        if (memcmp(scn_tri_corner(positions, indices, tri, c), p, 3 * sizeof(float)) == 0)
+            return c;
+    return 3;
+}
+
+size_t scn_join_glued_edges(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                            const float* positions, const uint8_t* solid)
+{
+    assert(adjacency && indices && positions && triangle_count < SCN_EDGE_REST);
+    double total_len = 0.0, max_len = 0.0;
+    for (size_t i = 0; i < 3 * triangle_count; i++) {
+        size_t t = i / 3, c = i % 3;
+        double l = glm_vec3_distance((float*)scn_tri_corner(positions, indices, (uint32_t)t, (uint32_t)c),
+                                     (float*)scn_tri_corner(positions, indices, (uint32_t)t, (uint32_t)((c + 1) % 3)));
+        total_len += l, max_len = fmax(max_len, l);
+    }
+    if (triangle_count == 0 || !(total_len > 0.0))
+        return 0;
+    uint8_t* closed = closed_components(adjacency, triangle_count);
+    if (!closed)
+        return 0;
+    for (size_t t = 0; t < triangle_count; t++) /* the faces glued on: opaque, static, of a closed surface */
+        closed[t] = closed[t] && (!solid || solid[t]);
+    rest_grid g = {0};
+    rest_scratch w = {.cap = 16};
+    w.tested = calloc(triangle_count, sizeof(uint32_t));
+    w.normals = calloc(triangle_count, sizeof(vec4));
+    for (uint32_t t = 0; w.normals && t < triangle_count; t++)
+        if (scn_tri_unit_normal(positions, indices, t, w.normals[t]))
+            w.normals[t][3] = 1.0f;
+    w.spans = malloc(sizeof(rest_span) * w.cap);
+    float cell = (float)fmax(total_len / (double)(3 * triangle_count), 1e-3);
+    bool ok = w.tested && w.normals && w.spans &&
+              grid_build(&g, positions, indices, triangle_count, closed, cell, (float)(2.0 * SCN_WELD_LINE_EPS * max_len));
+    /* the planes of the faces that may be glued on, to skip the edges of
+     * every triangle no such face lies against (most of a scene) */
+    uint64_t* keys = ok ? malloc(sizeof(uint64_t) * (triangle_count ? triangle_count : 1)) : NULL;
+    size_t nkeys = 0;
+    for (uint32_t t = 0; keys && t < triangle_count; t++)
+        if (closed[t] && w.normals[t][3] != 0.0f)
+            keys[nkeys++] = plane_key(w.normals[t], glm_vec3_dot(w.normals[t], (float*)scn_tri_corner(positions, indices, t, 0)), 0);
+    if (keys)
+        qsort(keys, nkeys, sizeof *keys, compare_u64);
+    ok = ok && keys;
+    size_t joined = 0;
+    uint32_t stamp = 0;
+    for (uint32_t t = 0; ok && t < triangle_count; t++) {
+        float* n_t = w.normals[t];
+        bool against = false;
+        if (n_t[3] != 0.0f) {
+            vec3 m;
+            glm_vec3_negate_to(n_t, m);
+            float d = glm_vec3_dot(m, (float*)scn_tri_corner(positions, indices, t, 0));
+            for (int dd = -1; dd <= 1 && !against; dd++) {
+                uint64_t key = plane_key(m, d, dd);
+                against = bsearch(&key, keys, nkeys, sizeof *keys, compare_u64) != NULL;
+            }
+        }
+        for (uint32_t c = 0; ok && against && c < 3; c++) {
+            uint32_t k = adjacency[3 * (size_t)t + c];
+            if (k >= SCN_EDGE_REST || k == t || w.normals[k][3] == 0.0f)
+                continue;
+            /* a consistently wound manifold edge, convex (t behind k's plane) */
+            const float *p0 = scn_tri_corner(positions, indices, t, c), *p1 = scn_tri_corner(positions, indices, t, (c + 1) % 3);
+            uint32_t k0 = corner_at(positions, indices, k, p1), k1 = corner_at(positions, indices, k, p0);
+            if (k0 == 3 || k1 != (k0 + 1) % 3 || adjacency[3 * (size_t)k + k0] != t)
+                continue;
+            vec3 d, s, r;
+            float* n_k = w.normals[k];
+            glm_vec3_sub((float*)scn_tri_corner(positions, indices, t, (c + 2) % 3), (float*)p0, r);
+            if (!(glm_vec3_dot(r, n_k) < -SCN_WELD_LINE_EPS * glm_vec3_norm(r)))
+                continue;
+            /* the faces t lies on face -n_t: s = d x (-n_t) must point to k's front side */
+            glm_vec3_sub((float*)p1, (float*)p0, d);
+            glm_vec3_cross(d, n_t, s);
+            glm_vec3_negate(s);
+            bool fwd = glm_vec3_dot(s, n_k) > 0.0f;
+            vec3 q0, q1;
+            memcpy(q0, fwd ? p0 : p1, sizeof q0);
+            memcpy(q1, fwd ? p1 : p0, sizeof q1);
+            stamp++;
+            w.m = 0;
+            for (size_t b = 0; ok && b < g.big_count; b++)
+                ok = consider(&w, positions, indices, t, n_k, q0, q1, g.big[b], stamp);
+            uint32_t samples = 2u + (uint32_t)(glm_vec3_norm(d) / (0.5f * g.cell));
+            int32_t prev[3];
+            for (uint32_t j = 0; ok && j < samples; j++) {
+                vec3 p;
+                glm_vec3_lerp(q0, q1, (float)j / (float)(samples - 1), p);
+                int32_t cur[3], lo[3], hi[3], q[3];
+                for (int a = 0; a < 3; a++) {
+                    cur[a] = (int32_t)floorf(p[a] / g.cell);
+                    lo[a] = j ? (cur[a] < prev[a] ? cur[a] : prev[a]) : cur[a];
+                    hi[a] = j ? (cur[a] > prev[a] ? cur[a] : prev[a]) : cur[a];
+                    prev[a] = cur[a];
+                }
+                for (q[0] = lo[0]; q[0] <= hi[0]; q[0]++)
+                    for (q[1] = lo[1]; q[1] <= hi[1]; q[1]++)
+                        for (q[2] = lo[2]; ok && q[2] <= hi[2]; q[2]++)
+                            ok = scan_cell(&w, &g, positions, indices, t, n_k, q0, q1, q, stamp);
+            }
+            size_t m = 0; /* only faces t lies on: coplanar with t, facing the other way */
+            for (size_t i = 0; i < w.m; i++)
+                if (w.spans[i].face != k && glm_vec3_dot(w.spans[i].normal, n_t) <= -SCN_WELD_NORMAL_COS)
+                    w.spans[m++] = w.spans[i];
+            if (ok && m > 0 && covering_face(w.spans, m) != SCN_EDGE_BORDER) {
+                adjacency[3 * (size_t)t + c] = t; /* faces as t from every point: never a silhouette */
+                adjacency[3 * (size_t)k + k0] = k;
+                joined++;
+            }
+        }
+    }
+    free(keys);
+    free(g.cells);
+    free(g.big);
+    free(w.tested);
+    free(w.normals);
+    free(w.spans);
+    free(closed);
+    return joined;
 }

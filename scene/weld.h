@@ -108,6 +108,19 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
 size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                            const float* positions, const uint8_t* solid);
 
+/* Parts glued on a closed solid (CAD/BIM exports: a wall standing on a
+ * slab, a slab against a wall, a book on a shelf): for each consistently
+ * wound, convex manifold edge E of triangles t and k where faces F of closed
+ * opaque static surfaces (`solid`, NULL: all) cover E end to end, each
+ * coplanar with t and facing the other way, covering a neighbourhood of E on
+ * k's front side, writes t into t's entry and k into k's (each faces as
+ * itself: E is never a silhouette). E is then a silhouette neither by the
+ * manifold rule (t, k) nor by the rest rule (k, F) (t faces one way exactly
+ * when F faces the other), and each alone is sound (docs/trim-regions.md,
+ * "Silhouettes"). Run it after scn_join_rest_edges. Returns the number of
+ * edges joined. */
+size_t scn_join_glued_edges(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                            const float* positions, const uint8_t* solid);
 /* Cracks: a mesh simplified or exported per part leaves narrow gaps between
  * faces that should meet (Sponza's decimated columns: 1 cm at their
  * corners), through which a renderer shows what lies inside. Sets

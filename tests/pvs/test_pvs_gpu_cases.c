@@ -238,6 +238,22 @@ static void test_wall_standing_on_a_floor(void)
     TV_CHECK(silhouettes[0] + 1 == silhouettes[1]);
 }
 
+/* A 27 cm slab filling the view 1.15 m away, and glued on its far face a
+ * box whose near face lies in that face's plane (an upper storey's wall on
+ * a floor slab, builtin:house). That face's edges are silhouettes from v*
+ * by the manifold rule (it faces v*, the box's sides do not), and their
+ * trims validated the slab's interval, so a box 6 m behind both, past their
+ * umbrae, was output. They are glued (scn_join_glued_edges): no silhouette. */
+static void test_box_glued_on_a_slab(void)
+{
+    fixture f = {0};
+    uint32_t m = constructed_scene(&f);
+    add_box(&f.scene, -30.0f, -30.0f, -1.42f, 30.0f, 30.0f, -1.15f, m);
+    add_box(&f.scene, -0.3f, -0.5f, -3.0f, 0.3f, 0.5f, -1.42f, m);
+    uint32_t hidden = add_box(&f.scene, -2.0f, -2.0f, -8.0f, 2.0f, 2.0f, -7.5f, m);
+    check_configuration(&f, "a box glued on a slab", 0.1f, FN_SIMPLE, &hidden, 1, NULL, 0);
+}
+
 /* A pillar whose front face is two quads with a 1.9 cm vertical slit
  * between them, 2.5 m away: 0.65 PVS pixels wide and placed between two
  * PVS pixel centres, so v* sees nothing through it, while eyes of the
@@ -507,6 +523,7 @@ int main(void)
     TV_TEST_RUN(test_candidate_behind_a_validated_back);
     TV_TEST_RUN(test_crack_in_a_pillar);
     TV_TEST_RUN(test_wall_standing_on_a_floor);
+    TV_TEST_RUN(test_box_glued_on_a_slab);
     TV_TEST_RUN(test_quad_seen_under_a_lifted_wall);
     TV_TEST_RUN(test_small_opening_at_view_edge);
     TV_TEST_RUN(test_box_seen_through_a_gap);
