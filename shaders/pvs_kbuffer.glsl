@@ -137,7 +137,8 @@ bool pvs_push_region(uint p, float trim, float second, float umbra, uint id)
 {
     if (trim == 0.0 && second == 0.0)
         return false;
-    pvs_mark_active(p);
+    if (pvs_region_activates(pixstate[p]))
+        pvs_mark_active(p);
     uint r = atomicAdd(pixcount[p].z, 1u);
     uvec2 a = uvec2(floatBitsToUint(trim), id), b = uvec2(floatBitsToUint(umbra), floatBitsToUint(second));
     if (r < view.k_regions && pvs_store_region(p, TV_PVS_REGION_SLOTS * r, a) &&
