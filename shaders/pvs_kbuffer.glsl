@@ -98,9 +98,9 @@ bool pvs_store(uint p, uint list, uint slot, uvec2 e)
 // caller handles a lost front; the lost depths make both conservative).
 // Only pixels P3 has work for become active: a still untrimmed pixel
 // without trim fragments resolves to nothing (pvs_resolve_pixel's early
-// return), so faces activate it only once it is trimmed (trims always,
-// pvs_push_region); the counters of every pixel are cleared before each
-// layer instead.
+// return), so faces activate it only once it is trimmed (trims where they
+// can change it: pvs_region_activates); the counters of every pixel are
+// cleared before each layer instead.
 bool pvs_push(uint p, uint kind, float depth, uint id)
 {
     if (pixstate[p].x != TV_STENCIL_UNTRIMMED)
