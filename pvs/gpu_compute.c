@@ -429,6 +429,7 @@ static void collect_stats(pvs_context* ctx, pvs_stats* st)
     st->overflow_fronts = c[TV_PVS_C_OVERFLOW_FRONTS];
     st->coop_pixels = c[TV_PVS_C_COOP_TOTAL];
     st->loop_budget_pixels = c[TV_PVS_C_LOOP_BUDGET];
+    st->idle_resolves = c[TV_PVS_C_IDLE];
     if (st->loop_budget_pixels)
         tv_log(TV_LOG_WARN, "pvs: %llu pixel resolves of P3 ran out of llvmpipe's loop budget: the PVS may miss "
                "triangles (docs/journal/2026-12-03-k64.md)", (unsigned long long)st->loop_budget_pixels);

@@ -129,6 +129,8 @@ typedef struct pvs_stats {
     uint64_t loop_budget_pixels;  /* pixel resolves of P3 that ran out of llvmpipe's loop budget
                                      (shaders/pvs_common.glsl): their results are unreliable, and
                                      pvs_compute logs a warning. 0 on other devices */
+    uint64_t idle_resolves;       /* pixel resolves with trims only at a pixel they cannot change
+                                     (pvs_region_activates in resolve.h): 0 unless P2 errs */
     uint32_t tiles;               /* tiles the image was computed in (pvs_desc.max_tile_pixels) */
     uint32_t proxies;             /* proxies given to pvs_compute_dynamic */
     uint32_t proxies_output;      /* of those, the ones whose ids joined the result */

@@ -176,6 +176,16 @@ static inline uint32_t pvs_kbuf_capacity(const pvs_kbuf* kbuf, uint32_t max)
  * them: the first min(count, K) slots of each list, skipping holes. */
 void pvs_kbuf_read(pvs_kbuf* kbuf, const pvs_kpages* pages);
 
+/* Whether a trim region's fragment makes its pixel active in P2 (pvs_region_activates of
+ * pvs_common.glsl; sealed pixels store nothing). A trimmed pixel that carries nothing, or one in
+ * overflow state, resolves with trims alone to no output and its state as it was (no interval,
+ * nothing to carry; test_trims_alone_change_nothing), so P2 leaves it inactive unless a face of
+ * the layer activates it: 4-10 % of P3's resolves at 30 cm (docs/journal/2026-12-03-speed2.md). */
+static inline bool pvs_region_activates(const pvs_pixel_state* s)
+{
+    return s->stencil == TV_STENCIL_UNTRIMMED || (s->stencil == TV_STENCIL_TRIMMED && s->carry_count != 0);
+}
+
 /* Resolves one active pixel after P2 rasterised a layer (depth: any value
  * monotonic in the distance along the pixel's ray from v*). Writes the
  * triangle ids this pixel adds to the trimmed-primitive list into `out`

@@ -122,6 +122,17 @@ float pvs_umbra_pack(float centre, float footprint)
     return uintBitsToFloat(b | (uint(q) + 1u));
 }
 
+// Whether a region fragment makes its pixel active (P2; pvs_region_activates
+// of resolve.h): a trimmed pixel that carries nothing, or one in overflow
+// state, resolves to nothing from trims alone (no interval, no carry, its
+// state written back as it was), so its region entries are read only where
+// a face of the layer activates it (pvs_push). P3 counts the resolves it
+// would have wasted (TV_PVS_C_IDLE, pvs_stats.idle_resolves: 0).
+bool pvs_region_activates(uvec4 st)
+{
+    return st.x == TV_STENCIL_UNTRIMMED || (st.x == TV_STENCIL_TRIMMED && st.y != 0u);
+}
+
 // pvs_spill_hidden (pvs/resolve.h): a candidate strictly inside the spill span [lo, hi] is hidden, lost or stored.
 bool pvs_spill_hidden(float lo, float hi, float depth) { return lo < depth && depth < hi; }
 

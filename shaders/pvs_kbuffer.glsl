@@ -98,9 +98,9 @@ bool pvs_store(uint p, uint list, uint slot, uvec2 e)
 // caller handles a lost front; the lost depths make both conservative).
 // Only pixels P3 has work for become active: a still untrimmed pixel
 // without trim fragments resolves to nothing (pvs_resolve_pixel's early
-// return), so faces activate it only once it is trimmed (trims always,
-// pvs_push_region); the counters of every pixel are cleared before each
-// layer instead.
+// return), so faces activate it only once it is trimmed (trims where they
+// can change it: pvs_region_activates); the counters of every pixel are
+// cleared before each layer instead.
 bool pvs_push(uint p, uint kind, float depth, uint id)
 {
     if (pixstate[p].x != TV_STENCIL_UNTRIMMED)
@@ -137,7 +137,8 @@ bool pvs_push_region(uint p, float trim, float second, float umbra, uint id)
 {
     if (trim == 0.0 && second == 0.0)
         return false;
-    pvs_mark_active(p);
+    if (pvs_region_activates(pixstate[p]))
+        pvs_mark_active(p);
     uint r = atomicAdd(pixcount[p].z, 1u);
     uvec2 a = uvec2(floatBitsToUint(trim), id), b = uvec2(floatBitsToUint(umbra), floatBitsToUint(second));
     if (r < view.k_regions && pvs_store_region(p, TV_PVS_REGION_SLOTS * r, a) &&

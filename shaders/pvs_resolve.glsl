@@ -549,6 +549,8 @@ void load_pixel(uint pixel)
     P = pixel;
     cnt = pixcount[P];
     uvec4 st = pixstate[P];
+    if (st.x != TV_STENCIL_SEALED && !pvs_region_activates(st) && cnt.x == 0u && cnt.y == 0u)
+        atomicAdd(counters[TV_PVS_C_IDLE], 1u); // P2 activated it for trims alone
     stencil = st.x;
     carry_count = stencil == TV_STENCIL_SEALED ? 0u : st.y;
     hide_begin = uintBitsToFloat(st.z);

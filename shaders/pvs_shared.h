@@ -318,7 +318,8 @@
 #define TV_PVS_C_COOP_TOTAL 34 // pixel resolves sorted cooperatively
 #define TV_PVS_C_P1_DONE    35 // P1 invocations of the layer done: the last one scans the counts and resets it (pvs_classify.comp)
 #define TV_PVS_C_LOOP_BUDGET 36 // P3 pixel resolves whose invocation ran out of llvmpipe's loop budget (pvs_common.glsl)
-#define TV_PVS_C_COUNT      37
+#define TV_PVS_C_IDLE       37 // P3 resolves of a pixel with trims only where they do nothing (pvs_region_activates): 0
+#define TV_PVS_C_COUNT      38
 
 // Fragment kinds of P2 (push constant `kind`), = TV_ENTRY_* above.
 #define TV_PVS_KIND_FRONT 1u

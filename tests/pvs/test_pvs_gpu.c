@@ -127,10 +127,11 @@ static void test_city_no_false_negatives(void)
         TV_CHECK(compute(&f, &vc, &r));
         TV_CHECK(r.count > 0 && r.count < f.scene.triangle_count / 2); /* buildings occlude */
         TV_CHECK(r.stats.layers >= 1 && r.stats.active_pixels > 0);
+        TV_CHECK(r.stats.idle_resolves == 0); /* pvs_region_activates (before it: 8 and 36) */
         TV_CHECK(apex_fn(&f, &r, &vc) == 0);
         uint32_t at_v0, worst = cone_fn(&f, &r, &vc, &at_v0);
-        printf("  FN pixels: %u at v0 (3 renders), worst cone sample %u (bound %u)\n", at_v0, worst,
-               fn_bound(FN_CITY));
+        printf("  FN pixels: %u at v0 (3 renders), worst cone sample %u (bound %u); idle resolves %llu\n", at_v0,
+               worst, fn_bound(FN_CITY), (unsigned long long)r.stats.idle_resolves);
         TV_CHECK(at_v0 <= 3 * fn_bound(FN_CITY));
         TV_CHECK(worst <= fn_bound(FN_CITY));
     }

@@ -476,6 +476,58 @@ static void test_deep_pixel_umbra_footprint(void)
     harness_k_exact = 0;
 }
 
+/* pvs_region_activates: where it says no, a layer of trims and umbrae alone outputs nothing and leaves
+ * the pixel's state as it was (the spill span aside, which only this resolve's spill draws read), so P2
+ * need not activate the pixel for them; where it says yes, they can change something. States: random
+ * layers from a trimmed pixel (carried runs and ranges, overflow), then one of trims only. */
+static void test_trims_alone_change_nothing(void)
+{
+    uint32_t rng = 4242, idle = 0, overflow = 0, carrying = 0, changed = 0;
+    for (int round = 0; round < 2000; round++) {
+        pvs_pixel_state s = {0};
+        harness_k_lists = round % 3 == 0 ? 2 : 0; /* some overflow */
+        for (int layer = 0; layer < 4 && s.stencil != TV_STENCIL_SEALED; layer++) {
+            item items[8];
+            uint32_t n = 1 + (uint32_t)(5.0f * pvs_test_rand(&rng)), shape = (uint32_t)(3.0f * pvs_test_rand(&rng));
+            for (uint32_t i = 0; i < n; i++)
+                items[i] = random_item(&rng, 100 * (uint32_t)layer + i);
+            bool trims_only = layer == 3 || shape == 0;
+            if (shape == 1 && !trims_only) { /* a validated interval: a hidden range, nothing carried */
+                float d = 1.0f + 20.0f * pvs_test_rand(&rng);
+                const item v[4] = {F(d, 900 + (uint32_t)layer), T(d + 0.1f, 3), B(d + 0.2f), U(d + 5.0f, 3)};
+                n = 4;
+                memcpy(items, v, sizeof v);
+            }
+            for (uint32_t i = 0; trims_only && i < n; i++)
+                if (items[i].kind == TV_ENTRY_FRONT || items[i].kind == TV_ENTRY_BACK)
+                    items[i] = (item)T(items[i].depth, items[i].id % 4);
+            pvs_pixel_state before = s;
+            layer_result r = run_layer(&s, items, n);
+            if (!trims_only || before.stencil == TV_STENCIL_SEALED)
+                continue;
+            bool same = s.stencil == before.stencil && s.carry_count == before.carry_count &&
+                        memcmp(s.carry, before.carry, sizeof s.carry) == 0 && s.hide_begin == before.hide_begin &&
+                        s.hide_end == before.hide_end && s.hide_end_fp == before.hide_end_fp &&
+                        s.term_depth == before.term_depth;
+            if (!pvs_region_activates(&before)) {
+                TV_CHECK(r.count == 0 && same);
+                idle++;
+                overflow += before.stencil == TV_STENCIL_OVERFLOW;
+            } else if (before.stencil == TV_STENCIL_TRIMMED) {
+                carrying++;
+                changed += !same || r.count > 0;
+            }
+        }
+    }
+    harness_k_lists = 0;
+    printf("  %u idle layers (%u in overflow state), %u with a carry (%u changed)\n", idle, overflow, carrying,
+           changed);
+    TV_CHECK(idle > 100 && overflow > 10 && changed > 10);
+    pvs_pixel_state fresh = {0}; /* an untrimmed pixel becomes trimmed */
+    layer_result r = RUN(fresh, T(1.0f, 1), U(2.0f, 1));
+    TV_CHECK(r.count == 0 && fresh.stencil == TV_STENCIL_TRIMMED && pvs_region_activates(&(pvs_pixel_state){0}));
+}
+
 int main(void)
 {
     TV_TEST_RUN(test_candidate_fronts);
@@ -497,5 +549,6 @@ int main(void)
     TV_TEST_RUN(test_prior_culled_back_closes_its_front);
     TV_TEST_RUN(test_trim_tied_with_its_face);
     TV_TEST_RUN(test_deep_pixel_umbra_footprint);
+    TV_TEST_RUN(test_trims_alone_change_nothing);
     return tv_test_finish();
 }
