@@ -237,6 +237,24 @@ void form_intervals(uint n)
     }
 }
 
+// resolve_regions.h's prior_patch: the front patch of an interval starting at the prior front, TV_PVS_PATCH_NONE
+// where unknown (two labels at its depth, or P2's patch slots not at TV_PVS_CENTRE_FRONT's depth)
+uint prior_patch(uint first)
+{
+    uint c = TV_PVS_CENTRE_STRIDE * P, f = centre_depth[c + TV_PVS_CENTRE_FRONT];
+    uint lo = centre_depth[c + TV_PVS_CENTRE_PATCH_LO], hi = centre_depth[c + TV_PVS_CENTRE_PATCH_HI];
+    bool known = ent[first].id == TV_ID_PRIOR && centre_depth[c + TV_PVS_CENTRE_PATCH_LO + 1u] == f &&
+                 centre_depth[c + TV_PVS_CENTRE_PATCH_HI + 1u] == f && lo == ~hi;
+    return known ? lo : TV_PVS_PATCH_NONE;
+}
+
+// resolve_regions.h's other_patch: region id named from a known front patch other than `prior`
+bool other_patch(uint id, uint prior)
+{
+    uint r = id & ~TV_REGION_CRACK, l = r < 3u * patch_drawn() ? patch_label[patch_drawn() + r] : TV_PVS_PATCH_NONE;
+    return prior != TV_PVS_PATCH_NONE && id != TV_ID_PRIOR && l != TV_PVS_PATCH_NONE && l != prior;
+}
+
 void validate(uint n)
 {
     for (uint v = 0u; v < iv_count; v++) {
@@ -251,14 +269,17 @@ void validate(uint n)
             if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
                 cracked = true;
         }
+        uint prior = prior_patch(iv_first[v]);
+        bool met = false; // resolve.c
         for (uint r = 0u; !lost_here && r < rg_n; r++) { // resolve.c's fragments, a region at a time
             if (!region_meets(r, lo, hi))
                 continue;
             float u = rg_umbra[r] < hi || isinf(rg_umbra[r]) ? hi : rg_umbra[r];
             float f = isinf(rg_umbra[r]) ? hi : max(rg_umbra_fp[r], hi);
-            iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
-            iv_end_fp[v] = iv_valid[v] && iv_end_fp[v] < f ? iv_end_fp[v] : f;
-            iv_valid[v] = true;
+            iv_end[v] = met && iv_end[v] < u ? iv_end[v] : u;
+            iv_end_fp[v] = met && iv_end_fp[v] < f ? iv_end_fp[v] : f;
+            met = true;
+            iv_valid[v] = iv_valid[v] || !(rg_count[r] > 1u && other_patch(rg_id[r], prior));
         }
         if (cracked && is_culled(ent[iv_back[v]])) { // resolve.c: seen through
             iv_valid[v] = true;
