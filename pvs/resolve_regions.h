@@ -39,7 +39,7 @@ static bool region_meets(const seq_entry* seq, uint32_t n, uint32_t i, float lo,
 static uint32_t prior_patch(const pvs_kbuf* k, const seq_entry* first)
 {
     uint32_t f, lo = k->patch_centre[0], hi = k->patch_centre[2];
-    memcpy(&f, &k->nearest_front, sizeof f);
+    memcpy(&f, &first->depth, sizeof f); /* a carried one: unknown once a nearer front joined the slots */
     bool known = first->id == TV_ID_PRIOR && k->patch_centre[1] == f && k->patch_centre[3] == f && lo == ~hi;
     return known ? lo : TV_PVS_PATCH_NONE;
 }

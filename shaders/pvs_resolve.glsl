@@ -238,10 +238,10 @@ void form_intervals(uint n)
 }
 
 // resolve_regions.h's prior_patch: the front patch of an interval starting at the prior front, TV_PVS_PATCH_NONE
-// where unknown (two labels at its depth, or P2's patch slots not at TV_PVS_CENTRE_FRONT's depth)
+// where unknown (two labels at its depth, or P2's patch slots not at its depth)
 uint prior_patch(uint first)
 {
-    uint c = TV_PVS_CENTRE_STRIDE * P, f = centre_depth[c + TV_PVS_CENTRE_FRONT];
+    uint c = TV_PVS_CENTRE_STRIDE * P, f = floatBitsToUint(ent[first].depth); // carried: a nearer front since unknown
     uint lo = centre_depth[c + TV_PVS_CENTRE_PATCH_LO], hi = centre_depth[c + TV_PVS_CENTRE_PATCH_HI];
     bool known = ent[first].id == TV_ID_PRIOR && centre_depth[c + TV_PVS_CENTRE_PATCH_LO + 1u] == f &&
                  centre_depth[c + TV_PVS_CENTRE_PATCH_HI + 1u] == f && lo == ~hi;
