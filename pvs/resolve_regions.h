@@ -1,6 +1,6 @@
 /* resolve_regions.h - resolve.c's tests of the trim regions of a pixel's sequence, as
- * shaders/pvs_resolve_regions.glsl has them: whether a region meets an interval or a lone back, and whether a
- * region has a fragment in front of a run. Included by resolve.c
+ * shaders/pvs_resolve_regions.glsl has them: whether a region meets an interval or a lone back, whether a
+ * region has a fragment in front of a run, and the front-patch rule (prior_patch, other_patch). Included by resolve.c
  * alone, after its sequence types; static functions. */
 #ifndef TRIMVR_PVS_RESOLVE_REGIONS_H
 #define TRIMVR_PVS_RESOLVE_REGIONS_H

@@ -30,7 +30,9 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
 // centre_depth's 64-bit slots (TV_PVS_CENTRE_PATCH_LO, _HI; shaderBufferInt64Atomics, render/device.c)
-layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CENTRE_DEPTH) coherent buffer pvs_centre64_buf { uint64_t centre64[]; };
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CENTRE_DEPTH) coherent buffer pvs_centre64_buf {
+    uint64_t centre64[];
+};
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 1) flat in uint v_triangle;

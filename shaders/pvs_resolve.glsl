@@ -237,24 +237,6 @@ void form_intervals(uint n)
     }
 }
 
-// resolve_regions.h's prior_patch: the front patch of an interval starting at the prior front, TV_PVS_PATCH_NONE
-// where unknown (two labels at its depth, or P2's patch slots not at its depth)
-uint prior_patch(uint first)
-{
-    uint c = TV_PVS_CENTRE_STRIDE * P, f = floatBitsToUint(ent[first].depth); // carried: a nearer front since unknown
-    uint lo = centre_depth[c + TV_PVS_CENTRE_PATCH_LO], hi = centre_depth[c + TV_PVS_CENTRE_PATCH_HI];
-    bool known = ent[first].id == TV_ID_PRIOR && centre_depth[c + TV_PVS_CENTRE_PATCH_LO + 1u] == f &&
-                 centre_depth[c + TV_PVS_CENTRE_PATCH_HI + 1u] == f && lo == ~hi;
-    return known ? lo : TV_PVS_PATCH_NONE;
-}
-
-// resolve_regions.h's other_patch: region id named from a known front patch other than `prior`
-bool other_patch(uint id, uint prior)
-{
-    uint r = id & ~TV_REGION_CRACK, l = r < 3u * patch_drawn() ? patch_label[patch_drawn() + r] : TV_PVS_PATCH_NONE;
-    return prior != TV_PVS_PATCH_NONE && id != TV_ID_PRIOR && l != TV_PVS_PATCH_NONE && l != prior;
-}
-
 void validate(uint n)
 {
     for (uint v = 0u; v < iv_count; v++) {

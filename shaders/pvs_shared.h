@@ -281,7 +281,7 @@
 #define TV_PVS_ORDER_CLASS(cap, i) (3u * (cap) + (i))       // layer triangle i's TV_PVS_CLASS_* bits
 #define TV_PVS_ORDER_GROUP(cap, g) (4u * (cap) + 4u * (g))  // P1 workgroup g: FF, BF, record counts (cleared per layer), then offsets and first region id
 #define TV_PVS_BIND_KREGIONS   26 // FLAT: the region list's pages (trim and umbra lists); KPOOL holds the fronts' and backs'
-#define TV_PVS_BIND_PATCH      27 // uint t < drawn: triangle t's front patch (pvs/patches.h, per view), then 3 drawn: region id's (P1)
+#define TV_PVS_BIND_PATCH      27 // drawn front-patch labels (pvs/patches.h, per view), then 3 x drawn region ids' (P1)
 #define TV_PVS_PATCH_NONE 0xFFFFFFFFu // no label: a triangle not facing v*, masked or touching a masked one, a proxy
 #define TV_PVS_BINDINGS        28
 

@@ -98,7 +98,8 @@ static void store_pixel(const pvs_kbuf* raw, uint32_t umbrae, pvs_kpages* pages,
     *kb = (pvs_kbuf){.k_exact = K_EXACT, .k_lists = K_LISTS, .nearest_front = raw->nearest_front,
                      .nearest_back = raw->nearest_back, .nearest_culled_back = raw->nearest_culled_back,
                      .culled_behind = raw->culled_behind, .region_patch = raw->region_patch,
-                     .patch_centre = {raw->patch_centre[0], raw->patch_centre[1], raw->patch_centre[2], raw->patch_centre[3]},
+                     .patch_centre = {raw->patch_centre[0], raw->patch_centre[1], raw->patch_centre[2],
+                                      raw->patch_centre[3]},
                      .region_patches = raw->region_patches,
                      .front_lost = raw->front_lost, .candidate_lost = raw->candidate_lost, .trim_lost = raw->trim_lost};
     if (heads)
@@ -272,7 +273,8 @@ static void upload(pvs_context* ctx, const case_data* c)
         l[TV_PVS_LOST_CANDIDATE] = kb->candidate_lost > 0.0f ? fbits(kb->candidate_lost) : fbits(INFINITY);
         l[TV_PVS_LOST_TRIM] = fbits(kb->trim_lost);
     }
-    uint32_t* patch = ctx->buffers[TV_PVS_BIND_PATCH].mapped, drawn = (uint32_t)(ctx->buffers[TV_PVS_BIND_PATCH].size / 16);
+    uint32_t* patch = ctx->buffers[TV_PVS_BIND_PATCH].mapped;
+    uint32_t drawn = (uint32_t)(ctx->buffers[TV_PVS_BIND_PATCH].size / 16);
     memset(patch, 0xFF, ctx->buffers[TV_PVS_BIND_PATCH].size);
     memcpy(patch + drawn, g_region_patch, sizeof g_region_patch);
     memset(ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped, 0, ctx->buffers[TV_PVS_BIND_TRI_FLAGS].size);
