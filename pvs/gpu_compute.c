@@ -2,6 +2,7 @@
  * P1-P3 per layer and P4, one submission, one wait; the flag buffer is then
  * compacted on the CPU into the sorted id list. */
 #include "gpu_internal.h"
+#include "patches.h"
 
 #include "clock.h"
 #include "log.h"
@@ -82,8 +83,20 @@ static pvs_view layer_view(const pvs_context* ctx, const pvs_viewcell* vc, const
     return v;
 }
 
+/* The front patches seen from the apex (pvs/patches.h), triangle labels first in TV_PVS_BIND_PATCH; proxies none. */
+static void write_patches(pvs_context* ctx, const float apex[3])
+{
+    uint32_t* lab = ctx->buffers[TV_PVS_BIND_PATCH].mapped;
+    uint32_t n = ctx->triangle_count, drawn = (uint32_t)(ctx->buffers[TV_PVS_BIND_PATCH].size / 16);
+    if (!ctx->adjacency || !pvs_front_patches(lab, ctx->adjacency, ctx->tri_corners, ctx->masked, n, apex))
+        n = 0;
+    for (uint32_t t = n; t < 4 * drawn; t++)
+        lab[t] = TV_PVS_PATCH_NONE;
+}
+
 static void write_view(pvs_context* ctx, const pvs_viewcell* vc, const rnd_camera* cam, const pvs_view* v)
 {
+    write_patches(ctx, v->apex);
     pvs_view_frame fr = pvs_view_frame_make(v);
     pvs_view_gpu g = {.tan_half_x = fr.tan_half_x,
                       .tan_half_y = fr.tan_half_y,

@@ -43,7 +43,7 @@ static bool host_visible(uint32_t binding)
 {
     return binding == TV_PVS_BIND_VIEW || binding == TV_PVS_BIND_LAYER_TRIS || binding == TV_PVS_BIND_COUNTERS ||
            binding == TV_PVS_BIND_TRI_FLAGS || binding == TV_PVS_BIND_LAYER_STATS || binding == TV_PVS_BIND_PROXIES ||
-           binding == TV_PVS_BIND_KALLOC;
+           binding == TV_PVS_BIND_KALLOC || binding == TV_PVS_BIND_PATCH;
 }
 
 static bool create_buffer(pvs_context* ctx, uint32_t binding, VkDeviceSize size, char* err, size_t err_size)
@@ -243,6 +243,7 @@ static bool create_fixed_buffers(pvs_context* ctx, char* err, size_t err_size)
         {TV_PVS_BIND_COOP_LIST, pixels * 4},
         {TV_PVS_BIND_PROXIES, (VkDeviceSize)ctx->max_proxies * PVS_PROXY_FLOATS * 4},
         {TV_PVS_BIND_SPILL, (1 + 2 * drawn) * 4},
+        {TV_PVS_BIND_PATCH, 4 * drawn * 4}, /* labels, then 3 region labels per drawn triangle */
     };
     for (size_t i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
         if (!create_buffer(ctx, fixed[i].binding, fixed[i].size, err, err_size))
@@ -360,6 +361,19 @@ static bool occluder_adjacency(const scn_scene* scene, const uint32_t* remap, ui
     return ok;
 }
 
+/* The occluders' adjacency and masked flags, kept for the front patches labelled per view (pvs/patches.h). */
+static bool keep_patch_inputs(pvs_context* ctx, const scn_scene* scene, const uint32_t* adjacency)
+{
+    ctx->adjacency = malloc(sizeof(uint32_t) * 3 * (size_t)scene->triangle_count);
+    ctx->masked = malloc(scene->triangle_count);
+    if (!ctx->adjacency || !ctx->masked)
+        return false;
+    memcpy(ctx->adjacency, adjacency, sizeof(uint32_t) * 3 * (size_t)scene->triangle_count);
+    for (uint32_t t = 0; t < scene->triangle_count; t++)
+        ctx->masked[t] = scene->materials[scene->tri_material[t]].alpha_mode == SCN_ALPHA_MASK;
+    return true;
+}
+
 /* Welded adjacency, uploaded once: P1 finds silhouettes with it. */
 static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err, size_t err_size)
 {
@@ -374,10 +388,12 @@ static bool upload_adjacency(pvs_context* ctx, const scn_scene* scene, char* err
         scn_weld_positions(remap, scene->positions, scene->vertex_count);
         ok = occluder_adjacency(scene, remap, adjacency, err, err_size);
         rnd_staging staging = {0};
+        if (ok && !keep_patch_inputs(ctx, scene, adjacency))
+            ok = (snprintf(err, err_size, "pvs: out of memory for the front patches of %s", scene->name), false);
         ok = ok && rnd_stream_begin(ctx->rnd, &ctx->stream, err, err_size) &&
              rnd_upload_buffer(ctx->rnd, ctx->stream.cmd, &staging, adjacency,
                                sizeof(uint32_t) * 3 * (VkDeviceSize)scene->triangle_count,
-                               ctx->buffers[TV_PVS_BIND_ADJ].buffer, err, err_size) &&
+                               ctx->buffers[TV_PVS_BIND_ADJ].buffer, err, err_size)  &&
              rnd_stream_submit_wait(ctx->rnd, &ctx->stream, err, err_size);
         rnd_staging_release(ctx->rnd, &staging);
     }
@@ -571,6 +587,8 @@ void pvs_destroy(pvs_context* ctx)
     free(ctx->per_layer);
     free(ctx->proxy_always);
     free(ctx->tri_corners);
+    free(ctx->adjacency);
+    free(ctx->masked);
     pvs_depth_bound_free(&ctx->depth_bound);
     free(ctx);
 }

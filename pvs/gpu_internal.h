@@ -73,7 +73,9 @@ struct pvs_context {
     uint32_t max_layers; /* pvs_desc.max_layers */
     pvs_proxy_sort proxy_sort;
     bool* proxy_always; /* max_proxies entries: pvs_proxies_sort's `always` */
-    float* tri_corners;        /* 9 floats per scene triangle, for depth_bound */
+    float* tri_corners;        /* 9 floats per scene triangle, for depth_bound and the front patches */
+    uint32_t* adjacency;       /* the occluders' welded adjacency and masked flags, for the front patches */
+    bool* masked;
     pvs_depth_bound depth_bound; /* per computation; its cells follow pvs_view_gpu in TV_PVS_BIND_VIEW */
 
     rnd_stream stream;

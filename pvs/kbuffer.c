@@ -135,8 +135,25 @@ static bool push_joined(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float 
     return kbuf->trim_count < TV_K_TRIM && push_entry(kbuf, pages, u); /* a full list drops it uncounted */
 }
 
-void pvs_centre_store(float centre[TV_PVS_CENTRE_STRIDE], uint32_t kind, float depth, uint32_t id)
+/* One 64-bit slot of centre[] (two uints, low first, as the GPU's little-endian uint64): atomicMin. */
+static void centre_min64(float* slot, uint64_t v)
 {
+    uint32_t w[2];
+    memcpy(w, slot, sizeof w);
+    if (v < ((uint64_t)w[1] << 32 | w[0])) {
+        w[0] = (uint32_t)v;
+        w[1] = (uint32_t)(v >> 32);
+        memcpy(slot, w, sizeof w);
+    }
+}
+
+void pvs_centre_store(float centre[TV_PVS_CENTRE_STRIDE], uint32_t kind, float depth, uint32_t id, uint32_t label)
+{
+    if (kind == TV_ENTRY_FRONT) {
+        uint64_t d = (uint64_t)bits(depth) << 32;
+        centre_min64(centre + TV_PVS_CENTRE_PATCH_LO, d | label);
+        centre_min64(centre + TV_PVS_CENTRE_PATCH_HI, d | (uint32_t)~label);
+    }
     assert(kind == TV_ENTRY_FRONT || kind == TV_ENTRY_BACK);
     bool culled = kind == TV_ENTRY_BACK && (id & TV_ID_CULLED) != 0;
     uint32_t slot = kind == TV_ENTRY_FRONT ? TV_PVS_CENTRE_FRONT : culled ? TV_PVS_CENTRE_CULLED : TV_PVS_CENTRE_BACK;

@@ -2,6 +2,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <string.h>
 
 /* Upper bounds of the per-pixel sequences (thread-local arrays on the GPU). */
 #define SEQ_MAX (2 * (TV_K_CARRY + TV_K_TRIM) + TV_K_FRONT + TV_K_BACK) // two trim depths per region entry
@@ -216,7 +217,8 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
         float lo = seq[iv->first[v]].depth, hi = seq[iv->back[v]].depth;
         bool lost = hi >= iv->trims_lost;
         iv->valid[v] = lost;
-        bool cracked = false;
+        bool cracked = false, met = false;
+        uint32_t prior = prior_patch(k, &seq[iv->first[v]]);
         iv->end[v] = iv->end_fp[v] = hi;
         for (uint32_t i = 0; i < n; i++) {
             if (seq[i].kind == TV_ENTRY_TRIM && seq[i].depth >= iv->trims_lost)
@@ -232,9 +234,10 @@ static void validate(const pvs_pixel_state* s, const pvs_kbuf* k, const seq_entr
             if (!pvs_umbra_depth(s, k, seq[i].id, &u, &f) || u < hi)
                 u = hi;
             f = f < hi ? hi : f;
-            iv->end[v] = iv->valid[v] && iv->end[v] < u ? iv->end[v] : u;
-            iv->end_fp[v] = iv->valid[v] && iv->end_fp[v] < f ? iv->end_fp[v] : f;
-            iv->valid[v] = true;
+            iv->end[v] = met && iv->end[v] < u ? iv->end[v] : u; /* a skipped region's umbra still bounds it */
+            iv->end_fp[v] = met && iv->end_fp[v] < f ? iv->end_fp[v] : f;
+            met = true;
+            iv->valid[v] = iv->valid[v] || !other_patch(k, seq, n, i, prior, iv->trims_lost);
         }
         /* Through a crack the eyes see the inside, and with the back culled
          * whatever lies behind it: the interval hides its inside only. */

@@ -87,6 +87,11 @@ typedef struct pvs_kbuf {
     /* The nearest culled back behind the nearest front of its layer (TV_PVS_CENTRE_CULLED_BEHIND), which may close a
      * prior front whose own back the nearest culled back, a lone one in front of it, is not. */
     float culled_behind;
+    /* P2's front-patch slots at the centre (TV_PVS_CENTRE_PATCH_LO, _HI as uints: least label, its depth bits, the
+     * greatest's complement, its depth bits; pvs_centre_store), and the regions' labels (P1; NULL: none known). */
+    uint32_t patch_centre[4];
+    const uint32_t* region_patch;
+    uint32_t region_patches;
     /* Nearest depth of a front (not a candidate) that found the front list
      * full (0: none); pvs_kbuf_push keeps it, as P2's atomicMin does. */
     float front_lost;
@@ -136,8 +141,9 @@ bool pvs_kbuf_push(pvs_kbuf* kbuf, pvs_kpages* pages, uint32_t kind, float depth
 /* P2's exact pass at a pixel centre (centre_depth, TV_PVS_CENTRE_*): joins a front, back or culled back (id with
  * TV_ID_CULLED) covering the centre to the nearest of its kind over the earlier faces; INFINITY: none. The caller
  * stores a layer's fronts before its backs, as P2 draws them, so that a culled back finds its layer's nearest front
- * (TV_PVS_PRIOR_CULLED_BEHIND). */
-void pvs_centre_store(float centre[TV_PVS_CENTRE_STRIDE], uint32_t kind, float depth, uint32_t id);
+ * (TV_PVS_PRIOR_CULLED_BEHIND). A front's front-patch `label` (pvs/patches.h) joins the 64-bit slots
+ * TV_PVS_CENTRE_PATCH_LO, _HI (their uints' bits in the floats), as P2's atomicMin does. */
+void pvs_centre_store(float centre[TV_PVS_CENTRE_STRIDE], uint32_t kind, float depth, uint32_t id, uint32_t label);
 
 /* P2's push of one trim region's fragment (pvs_push_region of
  * pvs_kbuffer.glsl): one entry of two trim depths and the umbra's depth (0:

@@ -179,13 +179,17 @@ static bool check_features(rnd_context* ctx, char* err, size_t err_size)
                  VK_API_VERSION_MAJOR(ctx->props.apiVersion), VK_API_VERSION_MINOR(ctx->props.apiVersion));
         return false;
     }
-    VkPhysicalDeviceVulkan13Features f13 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan12Features f12 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceVulkan13Features f13 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                            .pNext = &f12};
     VkPhysicalDeviceFeatures2 f = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &f13};
     vkGetPhysicalDeviceFeatures2(ctx->physical, &f);
     const char* missing = !f13.dynamicRendering ? "dynamicRendering"
                           : !f13.synchronization2 ? "synchronization2"
                           : !f.features.fragmentStoresAndAtomics ? "fragmentStoresAndAtomics"
                           : !f.features.independentBlend         ? "independentBlend"
+                          : !f.features.shaderInt64              ? "shaderInt64"
+                          : !f12.shaderBufferInt64Atomics        ? "shaderBufferInt64Atomics" // P2's front-patch slots
                                                                  : NULL;
     if (missing) {
         snprintf(err, err_size, "%s lacks the Vulkan feature %s", ctx->props.deviceName, missing);
@@ -216,13 +220,17 @@ static bool create_device(rnd_context* ctx, bool swapchain, char* err, size_t er
     ctx->timestamps = bits > 0 && ctx->props.limits.timestampPeriod > 0.0f;
     ctx->timestamp_mask = bits >= 64 ? UINT64_MAX : (UINT64_C(1) << bits) - 1;
 
+    VkPhysicalDeviceVulkan12Features f12 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                            .shaderBufferInt64Atomics = VK_TRUE};
     VkPhysicalDeviceVulkan13Features f13 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                            .pNext = &f12,
                                             .dynamicRendering = VK_TRUE,
                                             .synchronization2 = VK_TRUE};
     VkPhysicalDeviceFeatures2 features = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
                                           .pNext = &f13,
                                           .features = {.fragmentStoresAndAtomics = VK_TRUE,
-                                                       .independentBlend = VK_TRUE}};
+                                                       .independentBlend = VK_TRUE,
+                                                       .shaderInt64 = VK_TRUE}};
     float priority = 1.0f;
     VkDeviceCreateInfo info = {
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,

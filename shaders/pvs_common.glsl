@@ -72,6 +72,9 @@ layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_LOST) PVS_RW coherent buf
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_COOP_LIST) PVS_RW buffer pvs_coop_list_buf { uint coop_list[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_SPILL) PVS_RW coherent buffer pvs_spill_buf { uint spill_list[]; };
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_ORDER) PVS_RW coherent buffer pvs_order_buf { uint p1_order[]; };
+// Front-patch labels (pvs/patches.h): triangles' from the CPU per view, then regions' from P1 (pvs_order.comp)
+layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_PATCH) PVS_RW buffer pvs_patch_buf { uint patch_label[]; };
+uint patch_drawn() { return uint(patch_label.length()) / 4u; } // drawn labels, then 3 drawn region labels
 
 layout(push_constant) uniform pvs_push_block {
     uint layer_offset;

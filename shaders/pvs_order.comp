@@ -41,6 +41,8 @@ void main()
             continue;
         uint record = 3u * i + e;
         p1_order[TV_PVS_ORDER_SIL(at.z)] = record;
+        if (region < 3u * patch_drawn()) // P3's rule for regions behind a prior front: the patch it is named from
+            patch_label[patch_drawn() + region] = patch_label[tri];
         sil[record * TV_PVS_SIL_VEC4].w =
             uintBitsToFloat(region | ((word & TV_PVS_CLASS_CRACK(e)) != 0u ? TV_REGION_CRACK : 0u));
         at.z++;

@@ -251,14 +251,17 @@ void validate(uint n)
             if (crack && ent[i].depth >= lo - TV_PVS_CRACK_SLACK_M && ent[i].depth <= hi)
                 cracked = true;
         }
+        uint prior = prior_patch(iv_first[v]);
+        bool met = false; // resolve.c
         for (uint r = 0u; !lost_here && r < rg_n; r++) { // resolve.c's fragments, a region at a time
             if (!region_meets(r, lo, hi))
                 continue;
             float u = rg_umbra[r] < hi || isinf(rg_umbra[r]) ? hi : rg_umbra[r];
             float f = isinf(rg_umbra[r]) ? hi : max(rg_umbra_fp[r], hi);
-            iv_end[v] = iv_valid[v] && iv_end[v] < u ? iv_end[v] : u;
-            iv_end_fp[v] = iv_valid[v] && iv_end_fp[v] < f ? iv_end_fp[v] : f;
-            iv_valid[v] = true;
+            iv_end[v] = met && iv_end[v] < u ? iv_end[v] : u;
+            iv_end_fp[v] = met && iv_end_fp[v] < f ? iv_end_fp[v] : f;
+            met = true;
+            iv_valid[v] = iv_valid[v] || !(rg_count[r] > 1u && other_patch(rg_id[r], prior));
         }
         if (cracked && is_culled(ent[iv_back[v]])) { // resolve.c: seen through
             iv_valid[v] = true;

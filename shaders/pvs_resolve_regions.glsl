@@ -1,5 +1,6 @@
-// pvs_resolve_regions.glsl - pvs/resolve_regions.h: region_meets over a table of the
-// trim sequence's regions and region_in; included by pvs_resolve.glsl after umbra_depth.
+// pvs_resolve_regions.glsl - pvs/resolve_regions.h: region_meets over a table of the trim sequence's
+// regions, region_in, and the front-patch rule (prior_patch, other_patch); included by pvs_resolve.glsl after
+// umbra_depth.
 // resolve.c scans the whole sequence for a region's fragments at every call,
 // and validate and lone_eroded call it per fragment (with umbra_depth's scan
 // of the umbrae inside): cubic in the sequence, which spent llvmpipe's loop
@@ -81,6 +82,24 @@ bool region_in(uint n, uint id)
         if (ent[j].kind == TV_ENTRY_TRIM && ent[j].id == id)
             return true;
     return false;
+}
+
+// resolve_regions.h's prior_patch: the front patch of an interval starting at the prior front, TV_PVS_PATCH_NONE
+// where unknown (two labels at its depth, or P2's patch slots not at its depth)
+uint prior_patch(uint first)
+{
+    uint c = TV_PVS_CENTRE_STRIDE * P, f = floatBitsToUint(ent[first].depth); // its own: see resolve_regions.h
+    uint lo = centre_depth[c + TV_PVS_CENTRE_PATCH_LO], hi = centre_depth[c + TV_PVS_CENTRE_PATCH_HI];
+    bool known = ent[first].id == TV_ID_PRIOR && centre_depth[c + TV_PVS_CENTRE_PATCH_LO + 1u] == f &&
+                 centre_depth[c + TV_PVS_CENTRE_PATCH_HI + 1u] == f && lo == ~hi;
+    return known ? lo : TV_PVS_PATCH_NONE;
+}
+
+// resolve_regions.h's other_patch: region id named from a known front patch other than `prior`
+bool other_patch(uint id, uint prior)
+{
+    uint r = id & ~TV_REGION_CRACK, l = r < 3u * patch_drawn() ? patch_label[patch_drawn() + r] : TV_PVS_PATCH_NONE;
+    return prior != TV_PVS_PATCH_NONE && id != TV_ID_PRIOR && l != TV_PVS_PATCH_NONE && l != prior;
 }
 
 #endif

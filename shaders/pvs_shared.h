@@ -258,7 +258,12 @@
 // "Prior faces"). Depths as floats, in C and GLSL.
 #define TV_PVS_CENTRE_CULLED_BEHIND 3u
 #define TV_PVS_PRIOR_CULLED_BEHIND(front, culled) ((culled) > (front))
-#define TV_PVS_CENTRE_STRIDE  4u
+// Two 64-bit slots (uints 4-5, 6-7; P2's exact pass, atomicMin of depth bits << 32 | label): the least front-patch
+// label (TV_PVS_BIND_PATCH) and the complement of the greatest among the fronts at the nearest depth at the centre.
+// P3 knows the prior front's patch when both depths are TV_PVS_CENTRE_FRONT's and the labels agree (prior_patch).
+#define TV_PVS_CENTRE_PATCH_LO 4u
+#define TV_PVS_CENTRE_PATCH_HI 6u
+#define TV_PVS_CENTRE_STRIDE  8u
 #define TV_PVS_BIND_LOST       21 // TV_PVS_LOST_STRIDE uints per pixel, depth bits: the nearest lost front, lost candidate (P3 replaces it by the candidate spill bound), lost trim
 #define TV_PVS_LOST_FRONT     0u // slots of a pixel's TV_PVS_BIND_LOST entry: what the layer's k-buffer had no room for (P2, atomicMin)
 #define TV_PVS_LOST_CANDIDATE 1u
@@ -276,7 +281,9 @@
 #define TV_PVS_ORDER_CLASS(cap, i) (3u * (cap) + (i))       // layer triangle i's TV_PVS_CLASS_* bits
 #define TV_PVS_ORDER_GROUP(cap, g) (4u * (cap) + 4u * (g))  // P1 workgroup g: FF, BF, record counts (cleared per layer), then offsets and first region id
 #define TV_PVS_BIND_KREGIONS   26 // FLAT: the region list's pages (trim and umbra lists); KPOOL holds the fronts' and backs'
-#define TV_PVS_BINDINGS        27
+#define TV_PVS_BIND_PATCH      27 // drawn front-patch labels (pvs/patches.h, per view), then 3 x drawn region ids' (P1)
+#define TV_PVS_PATCH_NONE 0xFFFFFFFFu // no label: a triangle not facing v*, masked or touching a masked one, a proxy
+#define TV_PVS_BINDINGS        28
 
 // Class word of a layer triangle (TV_PVS_ORDER_CLASS): which of P1's lists
 // it enters, a back's flags, and which of its edges emitted a silhouette

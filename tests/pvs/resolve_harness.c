@@ -5,6 +5,9 @@
 
 uint32_t harness_pages = HARNESS_MAX_PAGES;
 uint32_t harness_k_exact, harness_k_lists;
+uint32_t (*harness_tri_patch)(uint32_t id);
+const uint32_t* harness_region_patch;
+uint32_t harness_region_patches;
 
 /* centre: P2's prior faces at the pixel centre over this and the earlier layers (TV_PVS_CENTRE_*; 0: none). */
 static layer_result run_layer_centre(pvs_pixel_state* s, const float centre[TV_PVS_CENTRE_STRIDE], const item* items,
@@ -21,6 +24,9 @@ static layer_result run_layer_centre(pvs_pixel_state* s, const float centre[TV_P
     k.nearest_back = centre[TV_PVS_CENTRE_BACK];
     k.nearest_culled_back = centre[TV_PVS_CENTRE_CULLED];
     k.culled_behind = centre[TV_PVS_CENTRE_CULLED_BEHIND];
+    memcpy(k.patch_centre, centre + TV_PVS_CENTRE_PATCH_LO, sizeof k.patch_centre);
+    k.region_patch = harness_region_patch;
+    k.region_patches = harness_region_patches;
     layer_result r = {0};
     for (uint32_t i = 0; i < n; i++) {
         if (!pvs_kbuf_push(&k, &pages, items[i].kind, items[i].depth, items[i].id) && items[i].kind == TV_ENTRY_FRONT)
@@ -50,7 +56,8 @@ layer_result run_layer_kept(pvs_pixel_state* s, float centre[TV_PVS_CENTRE_STRID
     for (uint32_t pass = 0; pass < 2; pass++) {
         for (uint32_t i = 0; i < n; i++) {
             if (items[i].kind == (pass ? TV_ENTRY_BACK : TV_ENTRY_FRONT) && !(items[i].id & TV_ID_CANDIDATE))
-                pvs_centre_store(centre, items[i].kind, items[i].depth, items[i].id);
+                pvs_centre_store(centre, items[i].kind, items[i].depth, items[i].id,
+                                 harness_tri_patch ? harness_tri_patch(items[i].id) : TV_PVS_PATCH_NONE);
         }
     }
     return run_layer_centre(s, centre, items, n);

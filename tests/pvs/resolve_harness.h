@@ -43,6 +43,11 @@ extern uint32_t harness_pages;
 extern uint32_t harness_k_exact;
 /* pvs_kbuf.k_lists of each run_layer* (0: TV_K_FRONT, TV_K_BACK). */
 extern uint32_t harness_k_lists;
+/* Front patches (pvs/patches.h): run_layer_kept's P2 labels a front with harness_tri_patch (NULL: every front
+ * TV_PVS_PATCH_NONE); the resolve reads region id r's label at harness_region_patch[r] (NULL: none known). */
+extern uint32_t (*harness_tri_patch)(uint32_t id);
+extern const uint32_t* harness_region_patch;
+extern uint32_t harness_region_patches;
 
 
 /* One layer: pushes `items` into a k-buffer as P2 would (prior_front /

@@ -57,6 +57,16 @@ static uint32_t rnd_region(void)
     return r >= 4 ? r | TV_REGION_CRACK : r;
 }
 
+static uint32_t fbits(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+/* The six regions' front-patch labels (TV_PVS_BIND_PATCH after the triangles'), drawn per case. */
+static uint32_t g_region_patch[6];
+
 static float rnd_depth(void)
 {
     return 0.1f * (float)(1 + rnd_u(10)); /* few values: ties */
@@ -87,7 +97,10 @@ static void store_pixel(const pvs_kbuf* raw, uint32_t umbrae, pvs_kpages* pages,
 {
     *kb = (pvs_kbuf){.k_exact = K_EXACT, .k_lists = K_LISTS, .nearest_front = raw->nearest_front,
                      .nearest_back = raw->nearest_back, .nearest_culled_back = raw->nearest_culled_back,
-                     .culled_behind = raw->culled_behind,
+                     .culled_behind = raw->culled_behind, .region_patch = raw->region_patch,
+                     .patch_centre = {raw->patch_centre[0], raw->patch_centre[1], raw->patch_centre[2],
+                                      raw->patch_centre[3]},
+                     .region_patches = raw->region_patches,
                      .front_lost = raw->front_lost, .candidate_lost = raw->candidate_lost, .trim_lost = raw->trim_lost};
     if (heads)
         memcpy(kb->head, heads, sizeof kb->head);
@@ -150,6 +163,15 @@ static uint32_t make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
     kb->nearest_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->nearest_culled_back = rnd_u(2) ? rnd_depth() : INFINITY;
     kb->culled_behind = rnd_u(2) ? rnd_depth() : INFINITY;
+    /* P2's front-patch slots (TV_PVS_CENTRE_PATCH_*): mostly one label at the prior front's depth, sometimes a tie
+     * of two labels, a slot at another depth (the C side compares bits as P3 does) or none */
+    uint32_t lab = rnd_u(4) == 0 ? TV_PVS_PATCH_NONE : rnd_u(3), f = fbits(kb->nearest_front);
+    kb->patch_centre[0] = lab;
+    kb->patch_centre[1] = rnd_u(6) == 0 ? fbits(rnd_depth()) : f;
+    kb->patch_centre[2] = ~(rnd_u(6) == 0 ? rnd_u(3) : lab);
+    kb->patch_centre[3] = rnd_u(6) == 0 ? fbits(rnd_depth()) : f;
+    kb->region_patch = g_region_patch;
+    kb->region_patches = 6;
     kb->front_lost = rnd_u(8) == 0 ? rnd_depth() : 0.0f;
     kb->candidate_lost = rnd_u(3) == 0 ? rnd_depth() : 0.0f; /* P3 then outputs stored candidates */
     kb->trim_lost = rnd_u(2) ? rnd_depth() : 0.0f; /* read when the trim list overflowed */
@@ -187,13 +209,6 @@ static uint32_t make_pixel(uint32_t p, pvs_kbuf* kb, pvs_pixel_state* st)
         st->hide_end_fp = pvs_umbra_footprint(end);
     }
     return umbrae;
-}
-
-static uint32_t fbits(float f)
-{
-    uint32_t u;
-    memcpy(&u, &f, sizeof u);
-    return u;
 }
 
 /* The last word of a pixel's state (TV_PVS_BIND_PIXSTATE): while trimmed, hide_end packed with hide_end_fp. */
@@ -252,11 +267,16 @@ static void upload(pvs_context* ctx, const case_data* c)
         centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_BACK] = fbits(kb->nearest_back);
         centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED] = fbits(kb->nearest_culled_back);
         centre[TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_CULLED_BEHIND] = fbits(kb->culled_behind);
+        memcpy(centre + TV_PVS_CENTRE_STRIDE * p + TV_PVS_CENTRE_PATCH_LO, kb->patch_centre, sizeof kb->patch_centre);
         uint32_t* l = lost + TV_PVS_LOST_STRIDE * p;
         l[TV_PVS_LOST_FRONT] = kb->front_lost > 0.0f ? fbits(kb->front_lost) : fbits(INFINITY);
         l[TV_PVS_LOST_CANDIDATE] = kb->candidate_lost > 0.0f ? fbits(kb->candidate_lost) : fbits(INFINITY);
         l[TV_PVS_LOST_TRIM] = fbits(kb->trim_lost);
     }
+    uint32_t* patch = ctx->buffers[TV_PVS_BIND_PATCH].mapped;
+    uint32_t drawn = (uint32_t)(ctx->buffers[TV_PVS_BIND_PATCH].size / 16);
+    memset(patch, 0xFF, ctx->buffers[TV_PVS_BIND_PATCH].size);
+    memcpy(patch + drawn, g_region_patch, sizeof g_region_patch);
     memset(ctx->buffers[TV_PVS_BIND_TRI_FLAGS].mapped, 0, ctx->buffers[TV_PVS_BIND_TRI_FLAGS].size);
     memset(ctx->buffers[TV_PVS_BIND_LAYER_STATS].mapped, 0, ctx->buffers[TV_PVS_BIND_LAYER_STATS].size);
     uint32_t* counters = ctx->buffers[TV_PVS_BIND_COUNTERS].mapped;
@@ -385,6 +405,8 @@ static void check(uint32_t coop_sort_min, pvs_kbuffer_layout layout, const char*
         if (flat)
             lay_out_flat(&pages, heads);
         uint32_t lost = 0;
+        for (uint32_t r = 0; r < 6; r++) /* a region of no patch, of the prior front's or of another */
+            g_region_patch[r] = rnd_u(4) == 0 ? TV_PVS_PATCH_NONE : rnd_u(3);
         for (uint32_t p = 0; p < PIXELS; p++) {
             pvs_kbuf raw;
             uint32_t umbrae = make_pixel(p, &raw, &c->state[p]);
