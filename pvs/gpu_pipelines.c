@@ -5,8 +5,13 @@
  * visibility buffer's id + depth attachments). */
 #include "gpu_internal.h"
 
+#include "log.h"
+
+#include <stdatomic.h>
+
 #include "pvs_classify_comp.spv.h"
 #include "pvs_face_frag.spv.h"
+#include "pvs_face_noi64_frag.spv.h"
 #include "pvs_face_vert.spv.h"
 #include "pvs_gather_comp.spv.h"
 #include "pvs_order_comp.spv.h"
@@ -90,9 +95,17 @@ static bool create_raster(pvs_context* ctx, VkShaderModule vert, VkShaderModule 
 static bool create_rasters(pvs_context* ctx, char* err, size_t err_size)
 {
     rnd_context* r = ctx->rnd;
+    /* A module declaring Int64Atomics is invalid on a device without the feature (render/device.c), so P2 takes
+     * the variant built without it there: front-patch rule off, a PVS never smaller (docs/pvs-gpu-passes.md). */
+    static atomic_flag logged = ATOMIC_FLAG_INIT;
+    if (!atomic_flag_test_and_set(&logged))
+        tv_log(TV_LOG_INFO, "pvs: %s", r->int64_atomics ? "P2 with 64-bit atomics (front-patch rule on)"
+                                                        : "P2 without 64-bit atomics (front-patch rule off)");
     VkShaderModule m[4] = {
         rnd_shader_module(r, tv_spv_pvs_face_vert, sizeof tv_spv_pvs_face_vert, err, err_size),
-        rnd_shader_module(r, tv_spv_pvs_face_frag, sizeof tv_spv_pvs_face_frag, err, err_size),
+        r->int64_atomics ? rnd_shader_module(r, tv_spv_pvs_face_frag, sizeof tv_spv_pvs_face_frag, err, err_size)
+                         : rnd_shader_module(r, tv_spv_pvs_face_noi64_frag, sizeof tv_spv_pvs_face_noi64_frag, err,
+                                             err_size),
         rnd_shader_module(r, tv_spv_pvs_quad_vert, sizeof tv_spv_pvs_quad_vert, err, err_size),
         rnd_shader_module(r, tv_spv_pvs_quad_frag, sizeof tv_spv_pvs_quad_frag, err, err_size),
     };

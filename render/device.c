@@ -188,13 +188,15 @@ static bool check_features(rnd_context* ctx, char* err, size_t err_size)
                           : !f13.synchronization2 ? "synchronization2"
                           : !f.features.fragmentStoresAndAtomics ? "fragmentStoresAndAtomics"
                           : !f.features.independentBlend         ? "independentBlend"
-                          : !f.features.shaderInt64              ? "shaderInt64"
-                          : !f12.shaderBufferInt64Atomics        ? "shaderBufferInt64Atomics" // P2's front-patch slots
                                                                  : NULL;
     if (missing) {
         snprintf(err, err_size, "%s lacks the Vulkan feature %s", ctx->props.deviceName, missing);
         return false;
     }
+    /* Optional: only P2's front-patch slots use them; without, the PVS runs its no-int64 variant (front-patch rule
+     * off, larger but conservative). TRIMVR_NO_INT64=1 leaves them off on any device, to test that variant. */
+    const char* off = getenv("TRIMVR_NO_INT64");
+    ctx->int64_atomics = f.features.shaderInt64 && f12.shaderBufferInt64Atomics && !(off && strcmp(off, "1") == 0);
     return true;
 }
 
@@ -221,7 +223,7 @@ static bool create_device(rnd_context* ctx, bool swapchain, char* err, size_t er
     ctx->timestamp_mask = bits >= 64 ? UINT64_MAX : (UINT64_C(1) << bits) - 1;
 
     VkPhysicalDeviceVulkan12Features f12 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
-                                            .shaderBufferInt64Atomics = VK_TRUE};
+                                            .shaderBufferInt64Atomics = ctx->int64_atomics};
     VkPhysicalDeviceVulkan13Features f13 = {.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
                                             .pNext = &f12,
                                             .dynamicRendering = VK_TRUE,
@@ -230,7 +232,7 @@ static bool create_device(rnd_context* ctx, bool swapchain, char* err, size_t er
                                           .pNext = &f13,
                                           .features = {.fragmentStoresAndAtomics = VK_TRUE,
                                                        .independentBlend = VK_TRUE,
-                                                       .shaderInt64 = VK_TRUE}};
+                                                       .shaderInt64 = ctx->int64_atomics}};
     float priority = 1.0f;
     VkDeviceCreateInfo info = {
         .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,

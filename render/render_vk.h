@@ -31,6 +31,7 @@ struct rnd_context {
     pthread_mutex_t queue_mutex; /* guards every use of `queue` */
     bool timestamps;             /* the queue family supports timestamp queries */
     uint64_t timestamp_mask;     /* its timestampValidBits as a mask */
+    bool int64_atomics; /* shaderInt64 + shaderBufferInt64Atomics enabled: P2's front-patch slots (pvs_face.frag) */
     atomic_uint validation_messages;
 
     /* mesh pass (pipeline.c) */

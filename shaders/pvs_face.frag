@@ -27,12 +27,16 @@
 #extension GL_GOOGLE_include_directive : require
 #include "pvs_geometry.glsl"
 #include "pvs_kbuffer.glsl"
+// centre_depth's 64-bit slots (TV_PVS_CENTRE_PATCH_LO, _HI; shaderBufferInt64Atomics, render/device.c). Built a
+// second time with TV_PVS_NO_INT64 (shaders/CMakeLists.txt) for devices without it: no int64 capability in the
+// module, the slots keep their +inf fill, and P3 sees every prior front's patch as unknown (rule off).
+#ifndef TV_PVS_NO_INT64
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
-// centre_depth's 64-bit slots (TV_PVS_CENTRE_PATCH_LO, _HI; shaderBufferInt64Atomics, render/device.c)
 layout(std430, set = TV_PVS_SET, binding = TV_PVS_BIND_CENTRE_DEPTH) coherent buffer pvs_centre64_buf {
     uint64_t centre64[];
 };
+#endif
 
 layout(location = 0) in vec2 v_uv;
 layout(location = 1) flat in uint v_triangle;
@@ -215,12 +219,14 @@ void main()
     if (kind == pc.kind) {
         atomicMin(centre_depth[TV_PVS_CENTRE_STRIDE * p + (kind == TV_PVS_KIND_BACK ? TV_PVS_CENTRE_BACK : TV_PVS_CENTRE_FRONT)],
                   floatBitsToUint(w));
+#ifndef TV_PVS_NO_INT64
         if (kind == TV_PVS_KIND_FRONT) { // the front patches at the nearest depth, exactly under ties and races
             uint64_t d = uint64_t(floatBitsToUint(w)) << 32, l = uint64_t(patch_label[v_triangle]);
             uint c = (TV_PVS_CENTRE_STRIDE * p) / 2u;
             atomicMin(centre64[c + TV_PVS_CENTRE_PATCH_LO / 2u], d | l);
             atomicMin(centre64[c + TV_PVS_CENTRE_PATCH_HI / 2u], d | (l ^ 0xFFFFFFFFul));
         }
+#endif
     } else { // the dilated pass, after the exact one
         uint c = TV_PVS_CENTRE_STRIDE * p;
         float nearest = uintBitsToFloat(min(centre_depth[c + TV_PVS_CENTRE_FRONT], centre_depth[c + TV_PVS_CENTRE_BACK]));
