@@ -229,6 +229,36 @@ static bool scan_cell(rest_scratch* w, const rest_grid* g, const float* position
     return ok;
 }
 
+/* Collects into w->spans the faces near edge (p0, p1) of tri: the big faces,
+ * then the grid cells along the edge, sampled half a cell apart so that the
+ * stretch between two samples lies in the box of their cells. */
+static bool scan_edge(rest_scratch* w, const rest_grid* g, const float* positions, const uint32_t* indices,
+                      uint32_t tri, const vec3 n_tri, const vec3 p0, const vec3 p1, uint32_t stamp)
+{
+    bool ok = true;
+    w->m = 0;
+    for (size_t b = 0; ok && b < g->big_count; b++)
+        ok = consider(w, positions, indices, tri, n_tri, p0, p1, g->big[b], stamp);
+    uint32_t samples = 2u + (uint32_t)(glm_vec3_distance((float*)p0, (float*)p1) / (0.5f * g->cell));
+    int32_t prev[3];
+    for (uint32_t j = 0; ok && j < samples; j++) {
+        vec3 p;
+        glm_vec3_lerp((float*)p0, (float*)p1, (float)j / (float)(samples - 1), p);
+        int32_t cur[3], lo[3], hi[3], q[3];
+        for (int k = 0; k < 3; k++) {
+            cur[k] = (int32_t)floorf(p[k] / g->cell);
+            lo[k] = j ? (cur[k] < prev[k] ? cur[k] : prev[k]) : cur[k];
+            hi[k] = j ? (cur[k] > prev[k] ? cur[k] : prev[k]) : cur[k];
+            prev[k] = cur[k];
+        }
+        for (q[0] = lo[0]; q[0] <= hi[0]; q[0]++)
+            for (q[1] = lo[1]; q[1] <= hi[1]; q[1]++)
+                for (q[2] = lo[2]; ok && q[2] <= hi[2]; q[2]++)
+                    ok = scan_cell(w, g, positions, indices, tri, n_tri, p0, p1, q, stamp);
+    }
+    return ok;
+}
+
 size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                            const float* positions, const uint8_t* solid)
 {
@@ -274,29 +304,7 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
             float len = glm_vec3_distance(p0, p1);
             if (!(len > 0.0f))
                 continue;
-            stamp++;
-            w.m = 0;
-            for (size_t b = 0; ok && b < g.big_count; b++)
-                ok = consider(&w, positions, indices, t, n_tri, p0, p1, g.big[b], stamp);
-            /* samples half a cell apart: the stretch between two lies in
-             * the box of their cells */
-            uint32_t samples = 2u + (uint32_t)(len / (0.5f * g.cell));
-            int32_t prev[3];
-            for (uint32_t j = 0; ok && j < samples; j++) {
-                vec3 p;
-                glm_vec3_lerp(p0, p1, (float)j / (float)(samples - 1), p);
-                int32_t cur[3], lo[3], hi[3], q[3];
-                for (int k = 0; k < 3; k++) {
-                    cur[k] = (int32_t)floorf(p[k] / g.cell);
-                    lo[k] = j ? (cur[k] < prev[k] ? cur[k] : prev[k]) : cur[k];
-                    hi[k] = j ? (cur[k] > prev[k] ? cur[k] : prev[k]) : cur[k];
-                    prev[k] = cur[k];
-                }
-                for (q[0] = lo[0]; q[0] <= hi[0]; q[0]++)
-                    for (q[1] = lo[1]; q[1] <= hi[1]; q[1]++)
-                        for (q[2] = lo[2]; ok && q[2] <= hi[2]; q[2]++)
-                            ok = scan_cell(&w, &g, positions, indices, t, n_tri, p0, p1, q, stamp);
-            }
+            ok = scan_edge(&w, &g, positions, indices, t, n_tri, p0, p1, ++stamp);
             /* the faces (facing one way) must cover the edge */
             uint32_t f = ok && w.m > 0 ? covering_face(w.spans, w.m) : SCN_EDGE_BORDER;
             if (f != SCN_EDGE_BORDER) {
@@ -458,27 +466,7 @@ size_t scn_join_glued_edges(uint32_t* adjacency, const uint32_t* indices, size_t
             vec3 q0, q1;
             memcpy(q0, fwd ? p0 : p1, sizeof q0);
             memcpy(q1, fwd ? p1 : p0, sizeof q1);
-            stamp++;
-            w.m = 0;
-            for (size_t b = 0; ok && b < g.big_count; b++)
-                ok = consider(&w, positions, indices, t, n_k, q0, q1, g.big[b], stamp);
-            uint32_t samples = 2u + (uint32_t)(glm_vec3_norm(d) / (0.5f * g.cell));
-            int32_t prev[3];
-            for (uint32_t j = 0; ok && j < samples; j++) {
-                vec3 p;
-                glm_vec3_lerp(q0, q1, (float)j / (float)(samples - 1), p);
-                int32_t cur[3], lo[3], hi[3], q[3];
-                for (int a = 0; a < 3; a++) {
-                    cur[a] = (int32_t)floorf(p[a] / g.cell);
-                    lo[a] = j ? (cur[a] < prev[a] ? cur[a] : prev[a]) : cur[a];
-                    hi[a] = j ? (cur[a] > prev[a] ? cur[a] : prev[a]) : cur[a];
-                    prev[a] = cur[a];
-                }
-                for (q[0] = lo[0]; q[0] <= hi[0]; q[0]++)
-                    for (q[1] = lo[1]; q[1] <= hi[1]; q[1]++)
-                        for (q[2] = lo[2]; ok && q[2] <= hi[2]; q[2]++)
-                            ok = scan_cell(&w, &g, positions, indices, t, n_k, q0, q1, q, stamp);
-            }
+            ok = scan_edge(&w, &g, positions, indices, t, n_k, q0, q1, ++stamp);
             size_t m = 0; /* only faces t lies on: coplanar with t, facing the other way */
             for (size_t i = 0; i < w.m; i++)
                 if (w.spans[i].face != k && glm_vec3_dot(w.spans[i].normal, n_t) <= -SCN_WELD_NORMAL_COS)
