@@ -322,9 +322,10 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
 }
 
 /* Per triangle, whether its connected component (triangles joined by
- * adjacency entries that name a triangle) has no other edge: a closed
- * surface. Union-find with path halving. NULL when out of memory. */
-static uint8_t* closed_components(const uint32_t* adjacency, size_t triangle_count)
+ * adjacency entries that name a triangle, or by `cover`: borders closed up
+ * to a T-junction, scn_cover_borders) has no other edge: a closed surface.
+ * Union-find with path halving. NULL when out of memory. */
+static uint8_t* closed_components(const uint32_t* adjacency, const uint32_t* cover, size_t triangle_count)
 {
     uint32_t* root = malloc(sizeof(uint32_t) * (triangle_count ? triangle_count : 1));
     uint8_t* closed = malloc(triangle_count ? triangle_count : 1);
@@ -336,7 +337,7 @@ static uint8_t* closed_components(const uint32_t* adjacency, size_t triangle_cou
     for (uint32_t t = 0; t < triangle_count; t++)
         root[t] = t, closed[t] = 1;
     for (size_t i = 0; i < 3 * triangle_count; i++) {
-        uint32_t a = (uint32_t)(i / 3), b = adjacency[i];
+        uint32_t a = (uint32_t)(i / 3), b = adjacency[i] < SCN_EDGE_REST ? adjacency[i] : cover[i];
         if (b >= SCN_EDGE_REST)
             continue;
         while (root[a] != a)
@@ -350,7 +351,7 @@ static uint8_t* closed_components(const uint32_t* adjacency, size_t triangle_cou
         uint32_t a = (uint32_t)(i / 3);
         while (root[a] != a)
             a = root[a];
-        if (adjacency[i] >= SCN_EDGE_REST && adjacency[i] != SCN_EDGE_NONMANIFOLD)
+        if (adjacency[i] >= SCN_EDGE_REST && adjacency[i] != SCN_EDGE_NONMANIFOLD && cover[i] == SCN_EDGE_BORDER)
             closed[a] = 0; /* a border: an opening (an edge three or more faces share has no side open) */
     }
     for (uint32_t t = 0; t < triangle_count; t++) {
@@ -404,7 +405,12 @@ size_t scn_join_glued_edges(uint32_t* adjacency, const uint32_t* indices, size_t
     }
     if (triangle_count == 0 || !(total_len > 0.0))
         return 0;
-    uint8_t* closed = closed_components(adjacency, triangle_count);
+    uint32_t* cover = malloc(sizeof(uint32_t) * 3 * triangle_count);
+    if (!cover)
+        return 0;
+    scn_cover_borders(cover, adjacency, indices, triangle_count, positions);
+    uint8_t* closed = closed_components(adjacency, cover, triangle_count);
+    free(cover);
     if (!closed)
         return 0;
     for (size_t t = 0; t < triangle_count; t++) /* the faces glued on: opaque, static, of a closed surface */

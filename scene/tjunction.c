@@ -154,3 +154,94 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
     free(spans);
     return joined;
 }
+
+/* An edge whose closure the glued-edge pass may read past: a border, or a
+ * border resting on a face (SCN_EDGE_REST | F, F a triangle). Cracks and
+ * non-manifold edges are not. */
+static bool open_edge(uint32_t a, size_t triangle_count)
+{
+    return a == SCN_EDGE_BORDER || (a >= SCN_EDGE_REST && (a & ~SCN_EDGE_REST) < triangle_count);
+}
+
+size_t scn_cover_borders(uint32_t* cover, const uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                         const float* positions)
+{
+    for (size_t i = 0; i < 3 * triangle_count; i++)
+        cover[i] = SCN_EDGE_BORDER;
+    size_t border = 0;
+    for (size_t i = 0; i < 3 * triangle_count; i++)
+        border += open_edge(adjacency[i], triangle_count) || adjacency[i] == SCN_EDGE_NONMANIFOLD;
+    tj_edge* edges = malloc(sizeof(tj_edge) * (border ? border : 1));
+    tj_span* spans = malloc(sizeof(tj_span) * (border ? border : 1));
+    if (!edges || !spans) {
+        free(edges);
+        free(spans);
+        return 0; /* nothing covered: every border stays an opening */
+    }
+    size_t n = 0;
+    for (uint32_t t = 0; t < triangle_count; t++) {
+        for (uint32_t c = 0; c < 3; c++) {
+            uint32_t v = adjacency[3 * (size_t)t + c];
+            if (!open_edge(v, triangle_count) && v != SCN_EDGE_NONMANIFOLD)
+                continue;
+            tj_edge* e = &edges[n];
+            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, c), e->p0);
+            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, (c + 1) % 3), e->p1);
+            if (!(glm_vec3_distance2(e->p0, e->p1) > 0.0f))
+                continue;
+            e->tri = t, e->corner = c, e->key = line_key(e->p0, e->p1);
+            n++;
+        }
+    }
+    qsort(edges, n, sizeof *edges, compare_key);
+    size_t covered = 0;
+    for (size_t lo = 0, hi; lo < n; lo = hi) {
+        for (hi = lo + 1; hi < n && edges[hi].key == edges[lo].key; hi++)
+            ;
+        for (size_t i = lo; i < hi; i++) {
+            tj_edge* a = &edges[i];
+            if (adjacency[3 * (size_t)a->tri + a->corner] == SCN_EDGE_NONMANIFOLD)
+                continue; /* covers others, never an opening itself */
+            vec3 d;
+            glm_vec3_sub(a->p1, a->p0, d);
+            float len = glm_vec3_norm(d), eps = SCN_WELD_LINE_EPS * len;
+            size_t m = 0;
+            uint32_t partner = SCN_EDGE_BORDER;
+            for (size_t j = lo; j < hi; j++) {
+                tj_edge* b = &edges[j];
+                vec3 db;
+                glm_vec3_sub(b->p1, b->p0, db);
+                if (b->tri == a->tri || glm_vec3_dot(d, db) >= 0.0f) /* walked the other way: consistent winding */
+                    continue;
+                float* bp[2] = {b->p0, b->p1};
+                float t[2];
+                bool on = true;
+                for (int k = 0; k < 2 && on; k++) {
+                    vec3 r, x;
+                    glm_vec3_sub(bp[k], a->p0, r);
+                    glm_vec3_cross(d, r, x);
+                    on = glm_vec3_norm(x) / len <= eps; /* on a's line */
+                    t[k] = glm_vec3_dot(r, d) / (len * len);
+                }
+                if (!on || !(fmaxf(t[0], t[1]) > fminf(t[0], t[1])))
+                    continue;
+                spans[m].t0 = fminf(t[0], t[1]), spans[m].t1 = fmaxf(t[0], t[1]);
+                partner = b->tri;
+                m++;
+            }
+            if (m == 0)
+                continue;
+            qsort(spans, m, sizeof *spans, compare_span);
+            float reach = 0.0f;
+            for (size_t k = 0; k < m && spans[k].t0 <= reach + SCN_WELD_LINE_EPS; k++)
+                reach = fmaxf(reach, spans[k].t1);
+            if (reach >= 1.0f - SCN_WELD_LINE_EPS) {
+                cover[3 * (size_t)a->tri + a->corner] = partner;
+                covered++;
+            }
+        }
+    }
+    free(edges);
+    free(spans);
+    return covered;
+}

@@ -121,6 +121,16 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
  * edges joined. */
 size_t scn_join_glued_edges(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                             const float* positions, const uint8_t* solid);
+/* Closure up to T-junctions, for scn_join_glued_edges: a box whose top is
+ * split where its side is not has border edges along that crease (the
+ * side's long edge meets the top's short ones), yet no gap. For each border
+ * edge (SCN_EDGE_BORDER, or SCN_EDGE_REST | F) that border edges of other
+ * triangles, walked the other way, cover end to end on its line (any
+ * plane), writes one of those triangles into cover[] (3*triangle_count
+ * entries), else SCN_EDGE_BORDER. Tolerances as scn_join_tjunctions'.
+ * Returns the number covered; 0 with nothing covered if it cannot allocate. */
+size_t scn_cover_borders(uint32_t* cover, const uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                         const float* positions);
 /* Cracks: a mesh simplified or exported per part leaves narrow gaps between
  * faces that should meet (Sponza's decimated columns: 1 cm at their
  * corners), through which a renderer shows what lies inside. Sets

@@ -1,5 +1,6 @@
 /* Border edges resting on another face (scn_join_rest_edges): a wall on a
- * floor, and the near misses that must stay borders. */
+ * floor, and the near misses that must stay borders; a box glued on a slab
+ * closed only up to a T-junction (scn_join_glued_edges). */
 #include "test.h"
 #include "weld.h"
 
@@ -8,7 +9,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#define MAX_TRIS 16
+#define MAX_TRIS 32
 
 typedef struct mesh {
     float pos[3 * 3 * MAX_TRIS];
@@ -171,11 +172,59 @@ static void test_tilted_floor(void)
     TV_CHECK(m.adj[3 * foot] == SCN_EDGE_BORDER);
 }
 
+
+/* Box [lo, hi], each face a quad counter-clockwise from outside; the top
+ * (y = hi) split at x = split when lo[0] < split < hi[0] (its two halves
+ * meet the sides z = lo, hi at a T-junction: the sides' top edges are not
+ * split); without its bottom when !bottom. */
+static void box(mesh* m, const float lo[3], const float hi[3], float split, bool bottom)
+{
+    const float x0 = lo[0], y0 = lo[1], z0 = lo[2], x1 = hi[0], y1 = hi[1], z1 = hi[2];
+    const float f[5][4][3] = {
+        {{x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}}, /* bottom, -y */
+        {{x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}}, /* +z */
+        {{x1, y0, z0}, {x0, y0, z0}, {x0, y1, z0}, {x1, y1, z0}}, /* -z */
+        {{x1, y0, z1}, {x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}}, /* +x */
+        {{x0, y0, z0}, {x0, y0, z1}, {x0, y1, z1}, {x0, y1, z0}}, /* -x */
+    };
+    for (int i = bottom ? 0 : 1; i < 5; i++)
+        quad(m, f[i]);
+    float cuts[3] = {x0, split, x1};
+    int n = x0 < split && split < x1 ? 2 : 1;
+    if (n == 1)
+        cuts[1] = x1;
+    for (int i = 0; i < n; i++) {
+        const float top[4][3] = {{cuts[i], y1, z1}, {cuts[i + 1], y1, z1}, {cuts[i + 1], y1, z0}, {cuts[i], y1, z0}};
+        quad(m, top);
+    }
+}
+
+/* A box glued on a slab's top: the box's bottom edges are glued (no
+ * silhouettes) when the slab is closed, also when its top is split at a
+ * T-junction (closed up to it: scn_cover_borders), not when a face is
+ * missing. */
+static void test_box_glued_on_a_split_slab(void)
+{
+    const float slab_lo[3] = {-2, -1, -2}, slab_hi[3] = {2, 0, 2}, lo[3] = {0.5f, 0, -0.5f}, hi[3] = {1.5f, 1, 0.5f};
+    size_t glued[3];
+    for (int v = 0; v < 3; v++) {
+        mesh m = {0};
+        box(&m, slab_lo, slab_hi, v == 0 ? 9.0f : 0.0f, v < 2); /* v = 2: split, no bottom (open) */
+        box(&m, lo, hi, 9.0f, true);
+        join(&m);
+        glued[v] = scn_join_glued_edges(m.adj, m.idx, m.tris, m.pos, m.solid);
+    }
+    TV_CHECK(glued[0] == 4); /* the four edges of the box's bottom */
+    TV_CHECK(glued[1] == 4);
+    TV_CHECK(glued[2] == 0);
+}
+
 int main(void)
 {
     TV_TEST_RUN(test_wall_on_a_floor);
     TV_TEST_RUN(test_near_misses);
     TV_TEST_RUN(test_wall_below_the_floor);
     TV_TEST_RUN(test_tilted_floor);
+    TV_TEST_RUN(test_box_glued_on_a_split_slab);
     return tv_test_finish();
 }
