@@ -197,6 +197,18 @@ typedef struct rest_scratch {
     size_t m, cap;
 } rest_scratch;
 
+/* Allocates w's per-triangle stamps and unit normals (w = 0 where
+ * degenerate) and its first spans; a failed allocation leaves a NULL. */
+static void scratch_init(rest_scratch* w, const float* positions, const uint32_t* indices, size_t triangle_count)
+{
+    w->tested = calloc(triangle_count, sizeof(uint32_t));
+    w->normals = calloc(triangle_count, sizeof(vec4));
+    for (uint32_t t = 0; w->normals && t < triangle_count; t++)
+        if (scn_tri_unit_normal(positions, indices, t, w->normals[t]))
+            w->normals[t][3] = 1.0f;
+    w->spans = malloc(sizeof(rest_span) * w->cap);
+}
+
 static bool consider(rest_scratch* w, const float* positions, const uint32_t* indices, uint32_t tri,
                      const vec3 n_tri, const vec3 p0, const vec3 p1, uint32_t f, uint32_t stamp)
 {
@@ -278,12 +290,7 @@ size_t scn_join_rest_edges(uint32_t* adjacency, const uint32_t* indices, size_t 
         return 0;
     rest_grid g;
     rest_scratch w = {.cap = 16};
-    w.tested = calloc(triangle_count, sizeof(uint32_t));
-    w.normals = calloc(triangle_count, sizeof(vec4));
-    for (uint32_t t = 0; w.normals && t < triangle_count; t++)
-        if (scn_tri_unit_normal(positions, indices, t, w.normals[t]))
-            w.normals[t][3] = 1.0f;
-    w.spans = malloc(sizeof(rest_span) * w.cap);
+    scratch_init(&w, positions, indices, triangle_count);
     float cell = (float)fmax(total_len / (double)border, 1e-3);
     /* a point of an edge lies within about 1.5 SCN_WELD_LINE_EPS of its length from
      * a face that covers it: pad the faces' boxes by twice that */
@@ -417,12 +424,7 @@ size_t scn_join_glued_edges(uint32_t* adjacency, const uint32_t* indices, size_t
         closed[t] = closed[t] && (!solid || solid[t]);
     rest_grid g = {0};
     rest_scratch w = {.cap = 16};
-    w.tested = calloc(triangle_count, sizeof(uint32_t));
-    w.normals = calloc(triangle_count, sizeof(vec4));
-    for (uint32_t t = 0; w.normals && t < triangle_count; t++)
-        if (scn_tri_unit_normal(positions, indices, t, w.normals[t]))
-            w.normals[t][3] = 1.0f;
-    w.spans = malloc(sizeof(rest_span) * w.cap);
+    scratch_init(&w, positions, indices, triangle_count);
     float cell = (float)fmax(total_len / (double)(3 * triangle_count), 1e-3);
     bool ok = w.tested && w.normals && w.spans &&
               grid_build(&g, positions, indices, triangle_count, closed, cell, (float)(2.0 * SCN_WELD_LINE_EPS * max_len));
