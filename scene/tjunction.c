@@ -91,6 +91,38 @@ static bool continues(const float* positions, const uint32_t* indices, tj_edge* 
     return span->t1 > span->t0;
 }
 
+/* An edge whose closure the glued-edge pass may read past: a border, or a
+ * border resting on a face (SCN_EDGE_REST | F, F a triangle). Cracks and
+ * non-manifold edges are not. */
+static bool open_edge(uint32_t a, size_t triangle_count)
+{
+    return a == SCN_EDGE_BORDER || (a >= SCN_EDGE_REST && (a & ~SCN_EDGE_REST) < triangle_count);
+}
+
+/* The edges of positive length that border a triangle (`open`: also rest
+ * edges and non-manifold ones) into `edges`, sorted by line; their count. */
+static size_t line_edges(tj_edge* edges, const uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
+                         const float* positions, bool open)
+{
+    size_t n = 0;
+    for (uint32_t t = 0; t < triangle_count; t++) {
+        for (uint32_t c = 0; c < 3; c++) {
+            uint32_t v = adjacency[3 * (size_t)t + c];
+            if (open ? !open_edge(v, triangle_count) && v != SCN_EDGE_NONMANIFOLD : v != SCN_EDGE_BORDER)
+                continue;
+            tj_edge* e = &edges[n];
+            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, c), e->p0);
+            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, (c + 1) % 3), e->p1);
+            if (!(glm_vec3_distance2(e->p0, e->p1) > 0.0f))
+                continue;
+            e->tri = t, e->corner = c, e->key = line_key(e->p0, e->p1);
+            n++;
+        }
+    }
+    qsort(edges, n, sizeof *edges, compare_key);
+    return n;
+}
+
 size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                            const float* positions)
 {
@@ -104,21 +136,7 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
         free(spans);
         return 0; /* every border stays a silhouette: conservative */
     }
-    size_t n = 0;
-    for (uint32_t t = 0; t < triangle_count; t++) {
-        for (uint32_t c = 0; c < 3; c++) {
-            if (adjacency[3 * t + c] != SCN_EDGE_BORDER)
-                continue;
-            tj_edge* e = &edges[n];
-            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, c), e->p0);
-            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, (c + 1) % 3), e->p1);
-            if (!(glm_vec3_distance2(e->p0, e->p1) > 0.0f))
-                continue;
-            e->tri = t, e->corner = c, e->key = line_key(e->p0, e->p1);
-            n++;
-        }
-    }
-    qsort(edges, n, sizeof *edges, compare_key);
+    size_t n = line_edges(edges, adjacency, indices, triangle_count, positions, false);
     size_t joined = 0;
     for (size_t lo = 0, hi; lo < n; lo = hi) {
         for (hi = lo + 1; hi < n && edges[hi].key == edges[lo].key; hi++)
@@ -155,13 +173,6 @@ size_t scn_join_tjunctions(uint32_t* adjacency, const uint32_t* indices, size_t 
     return joined;
 }
 
-/* An edge whose closure the glued-edge pass may read past: a border, or a
- * border resting on a face (SCN_EDGE_REST | F, F a triangle). Cracks and
- * non-manifold edges are not. */
-static bool open_edge(uint32_t a, size_t triangle_count)
-{
-    return a == SCN_EDGE_BORDER || (a >= SCN_EDGE_REST && (a & ~SCN_EDGE_REST) < triangle_count);
-}
 
 size_t scn_cover_borders(uint32_t* cover, const uint32_t* adjacency, const uint32_t* indices, size_t triangle_count,
                          const float* positions)
@@ -178,22 +189,7 @@ size_t scn_cover_borders(uint32_t* cover, const uint32_t* adjacency, const uint3
         free(spans);
         return 0; /* nothing covered: every border stays an opening */
     }
-    size_t n = 0;
-    for (uint32_t t = 0; t < triangle_count; t++) {
-        for (uint32_t c = 0; c < 3; c++) {
-            uint32_t v = adjacency[3 * (size_t)t + c];
-            if (!open_edge(v, triangle_count) && v != SCN_EDGE_NONMANIFOLD)
-                continue;
-            tj_edge* e = &edges[n];
-            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, c), e->p0);
-            glm_vec3_copy((float*)scn_tri_corner(positions, indices, t, (c + 1) % 3), e->p1);
-            if (!(glm_vec3_distance2(e->p0, e->p1) > 0.0f))
-                continue;
-            e->tri = t, e->corner = c, e->key = line_key(e->p0, e->p1);
-            n++;
-        }
-    }
-    qsort(edges, n, sizeof *edges, compare_key);
+    size_t n = line_edges(edges, adjacency, indices, triangle_count, positions, true);
     size_t covered = 0;
     for (size_t lo = 0, hi; lo < n; lo = hi) {
         for (hi = lo + 1; hi < n && edges[hi].key == edges[lo].key; hi++)
